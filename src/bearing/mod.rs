@@ -1,0 +1,142 @@
+//! Ball bearings: geometry, Hertz contact, statics, high-speed quasi-statics
+//! and stiffness.
+
+pub mod contact;
+pub mod geometry;
+pub mod presets;
+
+use std::f64::consts::PI;
+
+use crate::error::{non_negative, Error, Result};
+use crate::materials::{reduced_modulus, Material};
+pub use contact::{HertzContact, Raceway};
+pub use geometry::{BearingGeometry, BearingType};
+
+/// One ball bearing: internal geometry, the materials of its parts and the
+/// shaft it sits on (needed for centrifugal expansion, A-10).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Bearing {
+    pub name: String,
+    pub geometry: BearingGeometry,
+    pub inner_ring: Material,
+    pub outer_ring: Material,
+    pub ball: Material,
+    /// Shaft material (the inner ring is fitted on it).
+    pub shaft: Material,
+    /// Shaft bore diameter [m]; 0 for a solid shaft.
+    pub shaft_bore_m: f64,
+}
+
+impl Bearing {
+    /// A bearing with all-steel rings and shaft and balls of `ball` material.
+    pub fn new(name: impl Into<String>, geometry: BearingGeometry, rings: Material, ball: Material) -> Result<Self> {
+        let b = Bearing {
+            name: name.into(),
+            geometry,
+            inner_ring: rings.clone(),
+            outer_ring: rings,
+            ball,
+            shaft: Material::shaft_steel(),
+            shaft_bore_m: 0.0,
+        };
+        b.validate()?;
+        Ok(b)
+    }
+
+    /// Check materials and the shaft.
+    pub fn validate(&self) -> Result<()> {
+        self.inner_ring.validate()?;
+        self.outer_ring.validate()?;
+        self.ball.validate()?;
+        self.shaft.validate()?;
+        non_negative("shaft_bore_mm", self.shaft_bore_m * 1e3)?;
+        if self.shaft_bore_m >= self.geometry.bore_m {
+            return Err(Error::config(
+                "shaft_bore_mm",
+                self.shaft_bore_m * 1e3,
+                format!(
+                    "must be smaller than the bearing bore {} mm",
+                    self.geometry.bore_m * 1e3
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Hertz contact of a ball on the inner raceway at contact angle `alpha` [rad].
+    pub fn inner_contact(&self, alpha: f64) -> Result<HertzContact> {
+        let g = &self.geometry;
+        let c = contact::curvature(
+            Raceway::Inner,
+            g.ball_diameter_m,
+            g.pitch_diameter_m,
+            g.inner_conformity,
+            alpha,
+        );
+        HertzContact::new(c, reduced_modulus(&self.ball, &self.inner_ring))
+    }
+
+    /// Hertz contact of a ball on the outer raceway at contact angle `alpha` [rad].
+    pub fn outer_contact(&self, alpha: f64) -> Result<HertzContact> {
+        let g = &self.geometry;
+        let c = contact::curvature(
+            Raceway::Outer,
+            g.ball_diameter_m,
+            g.pitch_diameter_m,
+            g.outer_conformity,
+            alpha,
+        );
+        HertzContact::new(c, reduced_modulus(&self.ball, &self.outer_ring))
+    }
+
+    /// Series load-deflection constant K_n of one ball between both raceways
+    /// at contact angle `alpha` (A-3) [N/m^1.5].
+    pub fn ball_constant(&self, alpha: f64) -> Result<f64> {
+        Ok(contact::series_constant(
+            self.inner_contact(alpha)?.k_load_deflection,
+            self.outer_contact(alpha)?.k_load_deflection,
+        ))
+    }
+
+    /// Ball mass m = rho pi D^3 / 6 [kg].
+    pub fn ball_mass_kg(&self) -> f64 {
+        self.ball.density_kg_m3 * PI * self.geometry.ball_diameter_m.powi(3) / 6.0
+    }
+
+    /// Ball polar moment of inertia J = rho pi D^5 / 60 [kg m^2].
+    pub fn ball_inertia_kg_m2(&self) -> f64 {
+        self.ball.density_kg_m3 * PI * self.geometry.ball_diameter_m.powi(5) / 60.0
+    }
+
+    /// "steel", "hybrid" (ceramic balls on steel rings) or "ceramic".
+    pub fn material_class(&self) -> &'static str {
+        let ceramic = |m: &Material| m.name.eq_ignore_ascii_case("si3n4");
+        match (
+            ceramic(&self.ball),
+            ceramic(&self.inner_ring) && ceramic(&self.outer_ring),
+        ) {
+            (false, false) => "steel",
+            (true, false) => "hybrid",
+            (true, true) => "ceramic",
+            (false, true) => "custom",
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hybrid_contact_is_stiffer() {
+        let s = Bearing::preset("6208").unwrap();
+        let h = Bearing::preset("6208-hybrid").unwrap();
+        let a = s.geometry.free_contact_angle_rad;
+        assert!(h.ball_constant(a).unwrap() > s.ball_constant(a).unwrap());
+        assert_eq!(h.material_class(), "hybrid");
+        assert_eq!(s.material_class(), "steel");
+        // Si3N4 ball is about 40 % of the steel ball mass.
+        let r = h.ball_mass_kg() / s.ball_mass_kg();
+        assert!((r - 3200.0 / 7830.0).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,128 @@
+//! Named, switchable physical effects. Every term that a model can include
+//! or leave out is an [`Effect`]; an [`EffectSet`] says which are on. Names
+//! are the public, stable identifiers (Python `effects=[...]`, TOML, the
+//! discrepancy workflow).
+
+use crate::error::{Error, Result};
+
+/// A physical effect a model may include.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[repr(u8)]
+pub enum Effect {
+    /// Ball centrifugal force Fc = m dm omega_c^2 / 2.
+    CentrifugalForce = 0,
+    /// Ball gyroscopic moment Mg = J omega_b omega_c sin(beta).
+    GyroscopicMoment = 1,
+    /// Centrifugal expansion of the rotating inner ring and shaft.
+    RingCentrifugalExpansion = 2,
+}
+
+impl Effect {
+    /// Every effect, in registry order.
+    pub const ALL: [Effect; 3] = [
+        Effect::CentrifugalForce,
+        Effect::GyroscopicMoment,
+        Effect::RingCentrifugalExpansion,
+    ];
+
+    /// The public name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Effect::CentrifugalForce => "centrifugal_force",
+            Effect::GyroscopicMoment => "gyroscopic_moment",
+            Effect::RingCentrifugalExpansion => "ring_centrifugal_expansion",
+        }
+    }
+
+    /// One-line physical description.
+    pub fn description(self) -> &'static str {
+        match self {
+            Effect::CentrifugalForce => "ball centrifugal force pressing balls on the outer raceway (A-16)",
+            Effect::GyroscopicMoment => {
+                "ball gyroscopic moment, resisted by raceway friction under raceway control (A-17..A-19)"
+            }
+            Effect::RingCentrifugalExpansion => {
+                "radial growth of the rotating inner ring and shaft by centrifugal stress (A-10)"
+            }
+        }
+    }
+
+    /// Parse a public name.
+    pub fn from_name(name: &str) -> Result<Effect> {
+        Effect::ALL.iter().copied().find(|e| e.name() == name).ok_or_else(|| {
+            let known: Vec<_> = Effect::ALL.iter().map(|e| e.name()).collect();
+            Error::config("effects", name, format!("unknown effect; known: {}", known.join(", ")))
+        })
+    }
+
+    #[inline]
+    fn bit(self) -> u64 {
+        1u64 << (self as u8)
+    }
+}
+
+/// A set of effects (bit set; cheap to copy into hot loops).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct EffectSet(u64);
+
+impl Default for EffectSet {
+    /// All effects on.
+    fn default() -> Self {
+        Self::all()
+    }
+}
+
+impl EffectSet {
+    /// Every effect on.
+    pub fn all() -> Self {
+        EffectSet(Effect::ALL.iter().fold(0, |m, e| m | e.bit()))
+    }
+    /// No effect on (the plain static model).
+    pub fn none() -> Self {
+        EffectSet(0)
+    }
+    /// Is `e` on?
+    #[inline]
+    pub fn has(self, e: Effect) -> bool {
+        self.0 & e.bit() != 0
+    }
+    /// With `e` switched on.
+    pub fn with(self, e: Effect) -> Self {
+        EffectSet(self.0 | e.bit())
+    }
+    /// With `e` switched off.
+    pub fn without(self, e: Effect) -> Self {
+        EffectSet(self.0 & !e.bit())
+    }
+    /// Exactly the named effects.
+    pub fn from_names<S: AsRef<str>>(names: &[S]) -> Result<Self> {
+        names
+            .iter()
+            .try_fold(Self::none(), |s, n| Ok(s.with(Effect::from_name(n.as_ref())?)))
+    }
+    /// Names of the effects that are on, in registry order.
+    pub fn names(self) -> Vec<&'static str> {
+        Effect::ALL.iter().filter(|e| self.has(**e)).map(|e| e.name()).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_unknown_rejected() {
+        for e in Effect::ALL {
+            assert_eq!(Effect::from_name(e.name()).unwrap(), e);
+        }
+        let err = EffectSet::from_names(&["centrifugal_force", "magic"]).unwrap_err();
+        assert!(err.to_string().contains("magic"));
+        let s = EffectSet::from_names(&["gyroscopic_moment"]).unwrap();
+        assert!(s.has(Effect::GyroscopicMoment) && !s.has(Effect::CentrifugalForce));
+        assert_eq!(EffectSet::all().names().len(), Effect::ALL.len());
+        assert_eq!(
+            EffectSet::all().without(Effect::CentrifugalForce).names().len(),
+            Effect::ALL.len() - 1
+        );
+    }
+}

@@ -1,0 +1,13 @@
+//! PyO3 bindings: the `thermobear._native` extension module. All Python
+//! glue lives under this directory; the core crate knows nothing of it.
+
+use pyo3::prelude::*;
+
+pub mod errors;
+
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    errors::register(m)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}
