@@ -12,6 +12,7 @@
 //! rest of the crate never touches Python.
 
 pub mod bearing;
+pub mod config;
 pub mod effects;
 pub mod error;
 pub mod materials;

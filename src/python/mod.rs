@@ -3,11 +3,13 @@
 
 use pyo3::prelude::*;
 
+pub mod bearing;
 pub mod errors;
 
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
+    bearing::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -1,0 +1,53 @@
+"""thermobear: how the heat in a rolling bearing changes its stiffness, and
+with it the vibration of the machine it carries.
+
+Rust core (``thermobear._native``) with a Python front that returns polars
+DataFrames and draws matplotlib figures. Units are in every name:
+``speed_rpm``, ``axial_n``, ``ball_diameter_mm``, ``stiffness_n_per_m``.
+Results are SI unless the name says otherwise.
+"""
+
+from __future__ import annotations
+
+from . import _native
+from .bearing import Bearing, BearingSolution, Material, stiffness_curve
+from .config import load_config, seed_config, seed_config_names
+from .errors import (
+    ConfigError,
+    ConvergenceError,
+    DataError,
+    ThermalRunawayError,
+    ThermobearError,
+)
+
+__version__: str = _native.__version__
+
+
+def effects() -> "polars.DataFrame":  # noqa: F821
+    """The registry of named physical effects: ``name``, ``description``."""
+    import polars as pl
+
+    rows = _native.effects()
+    return pl.DataFrame(
+        {"name": [r[0] for r in rows], "description": [r[1] for r in rows]}
+    )
+
+
+from . import plot  # noqa: E402  (plot imports matplotlib lazily)
+
+__all__ = [
+    "Bearing",
+    "BearingSolution",
+    "ConfigError",
+    "ConvergenceError",
+    "DataError",
+    "Material",
+    "ThermalRunawayError",
+    "ThermobearError",
+    "effects",
+    "load_config",
+    "plot",
+    "seed_config",
+    "seed_config_names",
+    "stiffness_curve",
+]

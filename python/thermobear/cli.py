@@ -1,0 +1,78 @@
+"""The ``thermobear`` command line."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+from typing import Optional, Sequence
+
+
+def _cmd_demo(args: argparse.Namespace) -> int:
+    from .demo import run_demo
+
+    out = run_demo(Path(args.out), quick=args.quick)
+    print(f"thermobear demo: results written to {out.resolve()}")
+    return 0
+
+
+def _cmd_solve(args: argparse.Namespace) -> int:
+    from .demo import solve_config
+
+    out = solve_config(Path(args.config), Path(args.out))
+    print(f"thermobear solve: results written to {out.resolve()}")
+    return 0
+
+
+def _cmd_presets(args: argparse.Namespace) -> int:
+    from . import Bearing, Material, seed_config_names
+
+    print("bearings: " + ", ".join(Bearing.preset_names()))
+    print("materials: " + ", ".join(Material.preset_names()))
+    print("seed configurations: " + ", ".join(seed_config_names()))
+    return 0
+
+
+def _cmd_effects(args: argparse.Namespace) -> int:
+    from . import _native
+
+    for name, desc in _native.effects():
+        print(f"{name:32s} {desc}")
+    return 0
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    p = argparse.ArgumentParser(
+        prog="thermobear",
+        description="Thermally coupled bearing stiffness and drive dynamics.",
+    )
+    sub = p.add_subparsers(dest="command", required=True)
+    d = sub.add_parser("demo", help="run the built-in seed studies and write tables and figures")
+    d.add_argument("--out", default="thermobear-out", help="output folder (default: %(default)s)")
+    d.add_argument("--quick", action="store_true", help="coarser sweeps (for tests)")
+    d.set_defaults(func=_cmd_demo)
+    s = sub.add_parser("solve", help="solve a system description (TOML)")
+    s.add_argument("config", help="path to the .toml system description")
+    s.add_argument("--out", default="thermobear-out", help="output folder (default: %(default)s)")
+    s.set_defaults(func=_cmd_solve)
+    sub.add_parser("presets", help="list built-in bearings, materials and seeds").set_defaults(
+        func=_cmd_presets
+    )
+    sub.add_parser("effects", help="list the named physical effects").set_defaults(
+        func=_cmd_effects
+    )
+    args = p.parse_args(argv)
+    from .errors import ThermobearError
+
+    try:
+        return int(args.func(args))
+    except ThermobearError as e:
+        print(f"thermobear: {type(e).__name__}: {e}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("thermobear: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

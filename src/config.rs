@@ -1,0 +1,412 @@
+//! The system description file (TOML). Engineering units with the unit in
+//! every key (`ball_diameter_mm`, `speed_rpm`); unknown keys are rejected
+//! with their name. Later sections (thermal, gear, spindle) extend
+//! [`SystemConfig`].
+//!
+//! ```toml
+//! [[material]]              # optional user materials, by name
+//! name = "soft-steel"
+//! base = "52100"            # start from a preset, override any property
+//! youngs_modulus_gpa = 200.0
+//!
+//! [bearing]
+//! preset = "6208"           # or give the geometry below (overrides the preset)
+//! ring_material = "52100"
+//! ball_material = "Si3N4"
+//!
+//! [operating]
+//! speed_rpm = 16000.0
+//! axial_n = 2680.9
+//! radial_n = 1189.9
+//!
+//! [sweep]
+//! speed_start_rpm = 6500.0
+//! speed_stop_rpm = 16500.0
+//! speed_count = 101
+//!
+//! [model]
+//! effects = ["centrifugal_force", "gyroscopic_moment", "ring_centrifugal_expansion"]
+//! ```
+
+use serde::Deserialize;
+
+use crate::bearing::{Bearing, BearingGeometry};
+use crate::effects::EffectSet;
+use crate::error::{Error, Result};
+use crate::materials::Material;
+
+/// A whole system description.
+#[derive(Debug, Clone, Default, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct SystemConfig {
+    /// Optional title.
+    pub name: Option<String>,
+    #[serde(default, rename = "material")]
+    pub materials: Vec<MaterialConfig>,
+    pub bearing: Option<BearingConfig>,
+    pub operating: Option<OperatingConfig>,
+    pub sweep: Option<SweepConfig>,
+    pub model: Option<ModelConfig>,
+}
+
+/// A user material: a preset `base` with any property overridden.
+#[derive(Debug, Clone, Default, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialConfig {
+    pub name: String,
+    pub base: Option<String>,
+    pub youngs_modulus_gpa: Option<f64>,
+    pub poisson_ratio: Option<f64>,
+    pub density_kg_m3: Option<f64>,
+    pub thermal_expansion_per_k: Option<f64>,
+    pub conductivity_w_mk: Option<f64>,
+    pub specific_heat_j_kgk: Option<f64>,
+}
+
+/// A bearing: a preset and/or explicit geometry (explicit keys win).
+#[derive(Debug, Clone, Default, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct BearingConfig {
+    pub preset: Option<String>,
+    pub name: Option<String>,
+    /// "deep-groove" or "angular-contact".
+    #[serde(rename = "type")]
+    pub bearing_type: Option<String>,
+    pub ball_count: Option<usize>,
+    pub ball_diameter_mm: Option<f64>,
+    pub pitch_diameter_mm: Option<f64>,
+    pub inner_conformity: Option<f64>,
+    pub outer_conformity: Option<f64>,
+    pub diametral_clearance_mm: Option<f64>,
+    pub free_contact_angle_deg: Option<f64>,
+    pub bore_mm: Option<f64>,
+    pub outer_diameter_mm: Option<f64>,
+    pub width_mm: Option<f64>,
+    pub ring_material: Option<String>,
+    pub ball_material: Option<String>,
+    pub shaft_material: Option<String>,
+    pub shaft_bore_mm: Option<f64>,
+}
+
+/// One operating point.
+#[derive(Debug, Clone, Default, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct OperatingConfig {
+    #[serde(default)]
+    pub speed_rpm: f64,
+    #[serde(default)]
+    pub axial_n: f64,
+    #[serde(default)]
+    pub radial_n: f64,
+    #[serde(default)]
+    pub moment_nmm: f64,
+}
+
+/// An evenly spaced speed range, or an explicit list.
+#[derive(Debug, Clone, Default, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct SweepConfig {
+    pub speed_start_rpm: Option<f64>,
+    pub speed_stop_rpm: Option<f64>,
+    pub speed_count: Option<usize>,
+    pub speeds_rpm: Option<Vec<f64>>,
+}
+
+/// Model switches.
+#[derive(Debug, Clone, Default, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ModelConfig {
+    /// Effects that are on; absent means all.
+    pub effects: Option<Vec<String>>,
+    /// "outer" (default) or "inner" raceway control.
+    pub raceway_control: Option<String>,
+}
+
+impl SystemConfig {
+    /// Parse TOML text. Unknown keys, wrong types and syntax errors come
+    /// back as [`Error::Parse`] with the key and line.
+    pub fn from_toml(text: &str) -> Result<Self> {
+        toml::from_str(text).map_err(|e| Error::Parse(e.to_string().trim().replace('\n', " ")))
+    }
+
+    /// Read and parse a file.
+    pub fn from_file(path: &std::path::Path) -> Result<Self> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Error::config("path", path.display(), format!("cannot read: {e}")))?;
+        Self::from_toml(&text)
+    }
+
+    /// Resolve a material name: user materials first, then presets.
+    pub fn material(&self, name: &str) -> Result<Material> {
+        if let Some(m) = self.materials.iter().find(|m| m.name == name) {
+            return m.build();
+        }
+        Material::preset(name)
+    }
+
+    /// Build the bearing of the `[bearing]` section.
+    pub fn bearing(&self) -> Result<Bearing> {
+        let bc = self
+            .bearing
+            .as_ref()
+            .ok_or_else(|| Error::config("bearing", "missing", "the description has no [bearing] section"))?;
+        bc.build(self)
+    }
+
+    /// The effects of `[model]` (all when absent).
+    pub fn effects(&self) -> Result<EffectSet> {
+        match self.model.as_ref().and_then(|m| m.effects.as_ref()) {
+            Some(names) => EffectSet::from_names(names),
+            None => Ok(EffectSet::all()),
+        }
+    }
+
+    /// The speeds of `[sweep]`.
+    pub fn speeds_rpm(&self) -> Result<Vec<f64>> {
+        let s = self
+            .sweep
+            .as_ref()
+            .ok_or_else(|| Error::config("sweep", "missing", "the description has no [sweep] section"))?;
+        if let Some(v) = &s.speeds_rpm {
+            for &x in v {
+                crate::error::non_negative("speeds_rpm", x)?;
+            }
+            return Ok(v.clone());
+        }
+        match (s.speed_start_rpm, s.speed_stop_rpm, s.speed_count) {
+            (Some(a), Some(b), Some(n)) => {
+                crate::error::non_negative("speed_start_rpm", a)?;
+                crate::error::non_negative("speed_stop_rpm", b)?;
+                if n < 1 {
+                    return Err(Error::config("speed_count", n, "must be at least 1"));
+                }
+                Ok(linspace(a, b, n))
+            }
+            _ => Err(Error::config(
+                "sweep",
+                "incomplete",
+                "give speeds_rpm, or speed_start_rpm + speed_stop_rpm + speed_count",
+            )),
+        }
+    }
+}
+
+/// n evenly spaced values from a to b inclusive.
+pub fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
+    if n == 1 {
+        return vec![a];
+    }
+    (0..n).map(|i| a + (b - a) * i as f64 / (n - 1) as f64).collect()
+}
+
+impl MaterialConfig {
+    /// Build the material: preset `base` (default 52100) with overrides.
+    pub fn build(&self) -> Result<Material> {
+        let mut m = Material::preset(self.base.as_deref().unwrap_or("52100"))?;
+        m.name = self.name.clone();
+        if let Some(v) = self.youngs_modulus_gpa {
+            m.youngs_modulus_pa = v * 1e9;
+        }
+        if let Some(v) = self.poisson_ratio {
+            m.poisson_ratio = v;
+        }
+        if let Some(v) = self.density_kg_m3 {
+            m.density_kg_m3 = v;
+        }
+        if let Some(v) = self.thermal_expansion_per_k {
+            m.thermal_expansion_per_k = v;
+        }
+        if let Some(v) = self.conductivity_w_mk {
+            m.conductivity_w_mk = v;
+        }
+        if let Some(v) = self.specific_heat_j_kgk {
+            m.specific_heat_j_kgk = v;
+        }
+        m.validate()?;
+        Ok(m)
+    }
+}
+
+impl BearingConfig {
+    /// Build the bearing: start from the preset (if any), override geometry
+    /// and materials with the explicit keys.
+    pub fn build(&self, sys: &SystemConfig) -> Result<Bearing> {
+        let mm = 1e-3;
+        let base = match &self.preset {
+            Some(p) => Some(Bearing::preset(p)?),
+            None => None,
+        };
+        let bg = base.as_ref().map(|b| &b.geometry);
+        let need = |field: &str, v: Option<f64>, from_base: Option<f64>| -> Result<f64> {
+            v.or(from_base)
+                .ok_or_else(|| Error::config(field, "missing", "give it or a `preset` to start from"))
+        };
+        let kind = match (&self.bearing_type, bg) {
+            (Some(t), _) => t.to_ascii_lowercase(),
+            (None, Some(g)) => g.bearing_type.name().to_string(),
+            (None, None) => {
+                if self.free_contact_angle_deg.is_some() {
+                    "angular-contact".into()
+                } else {
+                    "deep-groove".into()
+                }
+            }
+        };
+        let z = self
+            .ball_count
+            .or(bg.map(|g| g.ball_count))
+            .ok_or_else(|| Error::config("ball_count", "missing", "give it or a `preset` to start from"))?;
+        let d = need(
+            "ball_diameter_mm",
+            self.ball_diameter_mm,
+            bg.map(|g| g.ball_diameter_m / mm),
+        )? * mm;
+        let dm = need(
+            "pitch_diameter_mm",
+            self.pitch_diameter_mm,
+            bg.map(|g| g.pitch_diameter_m / mm),
+        )? * mm;
+        let fi = need(
+            "inner_conformity",
+            self.inner_conformity,
+            bg.map(|g| g.inner_conformity),
+        )?;
+        let fo = need(
+            "outer_conformity",
+            self.outer_conformity,
+            bg.map(|g| g.outer_conformity),
+        )?;
+        let bore = need("bore_mm", self.bore_mm, bg.map(|g| g.bore_m / mm))? * mm;
+        let od = need(
+            "outer_diameter_mm",
+            self.outer_diameter_mm,
+            bg.map(|g| g.outer_diameter_m / mm),
+        )? * mm;
+        let w = need("width_mm", self.width_mm, bg.map(|g| g.width_m / mm))? * mm;
+        let geometry = match kind.as_str() {
+            "deep-groove" => {
+                let pd = need(
+                    "diametral_clearance_mm",
+                    self.diametral_clearance_mm,
+                    bg.map(|g| g.diametral_clearance_m / mm),
+                )? * mm;
+                BearingGeometry::deep_groove(z, d, dm, fi, fo, pd, bore, od, w)?
+            }
+            "angular-contact" => {
+                let a0 = need(
+                    "free_contact_angle_deg",
+                    self.free_contact_angle_deg,
+                    bg.map(|g| g.free_contact_angle_rad.to_degrees()),
+                )?;
+                BearingGeometry::angular_contact(z, d, dm, fi, fo, a0.to_radians(), bore, od, w)?
+            }
+            other => {
+                return Err(Error::config(
+                    "type",
+                    other,
+                    "must be \"deep-groove\" or \"angular-contact\"",
+                ));
+            }
+        };
+        let rings = match &self.ring_material {
+            Some(n) => sys.material(n)?,
+            None => base
+                .as_ref()
+                .map(|b| b.inner_ring.clone())
+                .unwrap_or_else(Material::steel_52100),
+        };
+        let ball = match &self.ball_material {
+            Some(n) => sys.material(n)?,
+            None => base
+                .as_ref()
+                .map(|b| b.ball.clone())
+                .unwrap_or_else(Material::steel_52100),
+        };
+        let name = self
+            .name
+            .clone()
+            .or_else(|| base.as_ref().map(|b| b.name.clone()))
+            .unwrap_or_else(|| "custom".into());
+        let mut b = Bearing::new(name, geometry, rings, ball)?;
+        if let Some(s) = &self.shaft_material {
+            b.shaft = sys.material(s)?;
+        }
+        if let Some(s) = self.shaft_bore_mm {
+            b.shaft_bore_m = s * mm;
+        }
+        b.validate()?;
+        Ok(b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn preset_with_overrides_and_user_material() {
+        let sys = SystemConfig::from_toml(
+            r#"
+            [[material]]
+            name = "soft"
+            base = "52100"
+            youngs_modulus_gpa = 190.0
+
+            [bearing]
+            preset = "6208"
+            diametral_clearance_mm = 0.02
+            ball_material = "soft"
+            "#,
+        )
+        .unwrap();
+        let b = sys.bearing().unwrap();
+        assert!((b.geometry.diametral_clearance_m - 0.02e-3).abs() < 1e-15);
+        assert_eq!(b.geometry.ball_count, 9);
+        assert!((b.ball.youngs_modulus_pa - 190e9).abs() < 1.0);
+        assert!(sys.effects().unwrap() == EffectSet::all());
+    }
+
+    #[test]
+    fn unknown_key_is_named() {
+        let e = SystemConfig::from_toml("[bearing]\npreset = \"6208\"\nball_diameter = 12.0\n").unwrap_err();
+        assert!(e.to_string().contains("ball_diameter"), "{e}");
+        let e = SystemConfig::from_toml("[bearnig]\n").unwrap_err();
+        assert!(e.to_string().contains("bearnig"), "{e}");
+    }
+
+    #[test]
+    fn explicit_geometry_matches_preset() {
+        let sys = SystemConfig::from_toml(
+            r#"
+            [bearing]
+            type = "deep-groove"
+            ball_count = 9
+            ball_diameter_mm = 12.0
+            pitch_diameter_mm = 60.0
+            inner_conformity = 0.52
+            outer_conformity = 0.53
+            diametral_clearance_mm = 0.04
+            bore_mm = 40.0
+            outer_diameter_mm = 80.0
+            width_mm = 18.0
+            [sweep]
+            speed_start_rpm = 0.0
+            speed_stop_rpm = 100.0
+            speed_count = 3
+            [model]
+            effects = ["centrifugal_force"]
+            "#,
+        )
+        .unwrap();
+        assert_eq!(
+            sys.bearing().unwrap().geometry,
+            Bearing::preset("6208").unwrap().geometry
+        );
+        assert_eq!(sys.speeds_rpm().unwrap(), vec![0.0, 50.0, 100.0]);
+        assert_eq!(sys.effects().unwrap().names(), vec!["centrifugal_force"]);
+        let bad = SystemConfig::from_toml("[bearing]\npreset=\"6208\"\ninner_conformity = 0.5\n").unwrap();
+        assert!(bad.bearing().unwrap_err().to_string().contains("inner_conformity"));
+        let bad = SystemConfig::from_toml("[model]\neffects = [\"warp_drive\"]\n").unwrap();
+        assert!(bad.effects().unwrap_err().to_string().contains("warp_drive"));
+    }
+}
