@@ -3,7 +3,6 @@
 import math
 
 import pytest
-
 import thermobear as tb
 
 
@@ -35,15 +34,26 @@ def test_material_override_and_custom():
     assert soft.youngs_modulus_gpa == pytest.approx(150.0)
     assert soft.poisson_ratio == pytest.approx(tb.Material.preset("52100").poisson_ratio)
     b_soft = tb.Bearing.deep_groove(
-        ball_count=9, ball_diameter_mm=12, pitch_diameter_mm=60, inner_conformity=0.52,
-        outer_conformity=0.53, diametral_clearance_mm=0.04, bore_mm=40, outer_diameter_mm=80,
-        width_mm=18, ring_material=soft, ball_material=soft,
+        ball_count=9,
+        ball_diameter_mm=12,
+        pitch_diameter_mm=60,
+        inner_conformity=0.52,
+        outer_conformity=0.53,
+        diametral_clearance_mm=0.04,
+        bore_mm=40,
+        outer_diameter_mm=80,
+        width_mm=18,
+        ring_material=soft,
+        ball_material=soft,
     )
     b = tb.Bearing.preset("6208")
     # Hertz: K scales with E' (same geometry), so a softer material has a smaller K.
     k_soft = b_soft.contact("inner", 15.0)["load_deflection_constant_n_per_m1_5"]
     k = b.contact("inner", 15.0)["load_deflection_constant_n_per_m1_5"]
-    e_ratio = b_soft.contact("inner", 15.0)["reduced_modulus_pa"] / b.contact("inner", 15.0)["reduced_modulus_pa"]
+    e_ratio = (
+        b_soft.contact("inner", 15.0)["reduced_modulus_pa"]
+        / b.contact("inner", 15.0)["reduced_modulus_pa"]
+    )
     assert k_soft / k == pytest.approx(e_ratio, rel=1e-12)
     with pytest.raises(tb.ConfigError, match="youngs_modulus_gpa"):
         tb.Material("bad", base="52100", youngs_modulus_gpa=-1.0)
@@ -67,7 +77,10 @@ def test_hertz_exact_vs_hamrock_brewe_and_load_law():
         p0 = 1.5 * 800.0 / (math.pi * exact["semi_major_m"] * exact["semi_minor_m"])
         assert exact["max_pressure_pa"] == pytest.approx(p0, rel=1e-12)
     # The inner contact is more conforming across, less in rolling: higher pressure.
-    assert b.contact("inner", 20.0, 800.0)["max_pressure_pa"] > b.contact("outer", 20.0, 800.0)["max_pressure_pa"]
+    assert (
+        b.contact("inner", 20.0, 800.0)["max_pressure_pa"]
+        > b.contact("outer", 20.0, 800.0)["max_pressure_pa"]
+    )
 
 
 @pytest.mark.parametrize(
@@ -83,9 +96,17 @@ def test_hertz_exact_vs_hamrock_brewe_and_load_law():
     ],
 )
 def test_bad_geometry_names_field(kwargs, field):
-    base = dict(ball_count=9, ball_diameter_mm=12, pitch_diameter_mm=60, inner_conformity=0.52,
-                outer_conformity=0.53, diametral_clearance_mm=0.04, bore_mm=40,
-                outer_diameter_mm=80, width_mm=18)
+    base = dict(
+        ball_count=9,
+        ball_diameter_mm=12,
+        pitch_diameter_mm=60,
+        inner_conformity=0.52,
+        outer_conformity=0.53,
+        diametral_clearance_mm=0.04,
+        bore_mm=40,
+        outer_diameter_mm=80,
+        width_mm=18,
+    )
     base.update(kwargs)
     with pytest.raises(tb.ConfigError, match=field):
         tb.Bearing.deep_groove(**base)
@@ -107,4 +128,6 @@ def test_seed_configs_ship_inside_the_package():
 
 def test_effects_registry():
     df = tb.effects()
-    assert {"centrifugal_force", "gyroscopic_moment", "ring_centrifugal_expansion"} <= set(df["name"])
+    assert {"centrifugal_force", "gyroscopic_moment", "ring_centrifugal_expansion"} <= set(
+        df["name"]
+    )

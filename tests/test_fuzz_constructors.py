@@ -4,10 +4,9 @@ another exception type)."""
 
 import math
 
+import thermobear as tb
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-import thermobear as tb
 
 floats = st.one_of(
     st.floats(allow_nan=True, allow_infinity=True, width=64),
@@ -19,14 +18,27 @@ floats = st.one_of(
 @settings(max_examples=300, deadline=None)
 @given(
     z=st.integers(min_value=-5, max_value=300),
-    d=floats, dm=floats, fi=floats, fo=floats, pd=floats, bore=floats, od=floats, w=floats,
+    d=floats,
+    dm=floats,
+    fi=floats,
+    fo=floats,
+    pd=floats,
+    bore=floats,
+    od=floats,
+    w=floats,
 )
 def test_deep_groove_constructor_never_panics(z, d, dm, fi, fo, pd, bore, od, w):
     try:
         b = tb.Bearing.deep_groove(
-            ball_count=z, ball_diameter_mm=d, pitch_diameter_mm=dm, inner_conformity=fi,
-            outer_conformity=fo, diametral_clearance_mm=pd, bore_mm=bore,
-            outer_diameter_mm=od, width_mm=w,
+            ball_count=z,
+            ball_diameter_mm=d,
+            pitch_diameter_mm=dm,
+            inner_conformity=fi,
+            outer_conformity=fo,
+            diametral_clearance_mm=pd,
+            bore_mm=bore,
+            outer_diameter_mm=od,
+            width_mm=w,
         )
     except tb.ConfigError as e:
         assert "=" in str(e)  # names field and value
@@ -41,8 +53,14 @@ def test_deep_groove_constructor_never_panics(z, d, dm, fi, fo, pd, bore, od, w)
 def test_angular_contact_constructor_never_panics(z, a0, d, dm):
     try:
         tb.Bearing.angular_contact(
-            ball_count=z, ball_diameter_mm=d, pitch_diameter_mm=dm, inner_conformity=0.52,
-            outer_conformity=0.53, free_contact_angle_deg=a0, bore_mm=45, outer_diameter_mm=75,
+            ball_count=z,
+            ball_diameter_mm=d,
+            pitch_diameter_mm=dm,
+            inner_conformity=0.52,
+            outer_conformity=0.53,
+            free_contact_angle_deg=a0,
+            bore_mm=45,
+            outer_diameter_mm=75,
             width_mm=16,
         )
     except tb.ConfigError:
@@ -53,8 +71,15 @@ def test_angular_contact_constructor_never_panics(z, a0, d, dm):
 @given(e=floats, nu=floats, rho=floats, alpha=floats, k=floats, c=floats)
 def test_material_constructor_never_panics(e, nu, rho, alpha, k, c):
     try:
-        m = tb.Material("x", youngs_modulus_gpa=e, poisson_ratio=nu, density_kg_m3=rho,
-                        thermal_expansion_per_k=alpha, conductivity_w_mk=k, specific_heat_j_kgk=c)
+        m = tb.Material(
+            "x",
+            youngs_modulus_gpa=e,
+            poisson_ratio=nu,
+            density_kg_m3=rho,
+            thermal_expansion_per_k=alpha,
+            conductivity_w_mk=k,
+            specific_heat_j_kgk=c,
+        )
     except tb.ConfigError:
         return
     assert m.youngs_modulus_gpa > 0 and 0 <= m.poisson_ratio < 0.5

@@ -28,9 +28,7 @@ def effects() -> "polars.DataFrame":  # noqa: F821
     import polars as pl
 
     rows = _native.effects()
-    return pl.DataFrame(
-        {"name": [r[0] for r in rows], "description": [r[1] for r in rows]}
-    )
+    return pl.DataFrame({"name": [r[0] for r in rows], "description": [r[1] for r in rows]})
 
 
 from . import plot  # noqa: E402  (plot imports matplotlib lazily)

@@ -93,12 +93,14 @@ def study_seed_a_bearing(out: Path, quick: bool = False) -> list[Path]:
     speed = stiffness_curve(b, speeds, op["axial_n"], op["radial_n"], mode="speed")
     both = _contact_summary([const, speed], ["constant", "speed"])
     files += write_table(both, out, "seed_a_stiffness_vs_speed")
-    ax = plot.stiffness_cases([const, speed], ["constant", "speed, no thermal"],
-                              column="radial_stiffness_n_per_m")
+    ax = plot.stiffness_cases(
+        [const, speed], ["constant", "speed, no thermal"], column="radial_stiffness_n_per_m"
+    )
     ax.set_title("6208, Fa = 2680.9 N, Fr = 1189.9 N: radial stiffness")
     files.append(save_figure(ax, out, "seed_a_radial_stiffness"))
-    ax = plot.stiffness_cases([const, speed], ["constant", "speed, no thermal"],
-                              column="axial_stiffness_n_per_m")
+    ax = plot.stiffness_cases(
+        [const, speed], ["constant", "speed, no thermal"], column="axial_stiffness_n_per_m"
+    )
     ax.set_title("6208: axial stiffness")
     files.append(save_figure(ax, out, "seed_a_axial_stiffness"))
     ax = plot.contact_angles(speed)
@@ -123,8 +125,9 @@ def study_seed_b_bearing(out: Path, quick: bool = False) -> list[Path]:
             df = stiffness_curve(b, speeds, axial_n=preload)
             import polars as pl
 
-            frames.append(df.with_columns(pl.lit(preset).alias("bearing"),
-                                          pl.lit(preload).alias("preload_n")))
+            frames.append(
+                df.with_columns(pl.lit(preset).alias("bearing"), pl.lit(preload).alias("preload_n"))
+            )
             labels.append(f"{preset} {preload:.0f} N")
     import polars as pl
 
@@ -175,8 +178,14 @@ def solve_config(path: Path, out: Path) -> Path:
     write_table(sol.balls, out, "balls")
     np.savetxt(out / "stiffness_matrix_si.csv", sol.stiffness, delimiter=",")
     if "sweep" in cfg:
-        df = stiffness_curve(b, _speeds(cfg, False), op.get("axial_n", 0.0),
-                             op.get("radial_n", 0.0), op.get("moment_nmm", 0.0),
-                             effects=effects, raceway_control=control)
+        df = stiffness_curve(
+            b,
+            _speeds(cfg, False),
+            op.get("axial_n", 0.0),
+            op.get("radial_n", 0.0),
+            op.get("moment_nmm", 0.0),
+            effects=effects,
+            raceway_control=control,
+        )
         write_table(df, out, "stiffness_vs_speed")
     return out
