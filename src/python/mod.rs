@@ -5,6 +5,7 @@ use pyo3::prelude::*;
 
 pub mod bearing;
 pub mod errors;
+pub mod parallel;
 
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
