@@ -47,8 +47,20 @@ def hertz_k(raceway: str, d: float, dm: float, f: float, alpha: float, ep: float
 
 
 class ReferenceBearing:
-    def __init__(self, z=9, d=12e-3, dm=60e-3, fi=0.52, fo=0.53, pd=0.04e-3,
-                 ball=STEEL, ring=STEEL, k_table_deg=np.arange(0.0, 60.01, 0.5)):
+    def __init__(
+        self,
+        z=9,
+        d=12e-3,
+        dm=60e-3,
+        fi=0.52,
+        fo=0.53,
+        pd=0.04e-3,
+        ball=STEEL,
+        ring=STEEL,
+        k_table_deg=None,
+    ):
+        if k_table_deg is None:
+            k_table_deg = np.arange(0.0, 60.01, 0.5)
         self.z, self.d, self.dm, self.fi, self.fo = z, d, dm, fi, fo
         self.a = (fi + fo - 1) * d
         self.alpha0 = math.acos(1 - pd / (2 * self.a))
@@ -84,8 +96,10 @@ class ReferenceBearing:
         # Outer-raceway control kinematics (Harris): attitude, orbit, spin.
         beta = np.arctan2(sin_o, cos_o + d / dm)
         cb, sb = np.cos(beta), np.sin(beta)
-        ratio = (dm / d + cos_o) * (cb * cos_i + sb * sin_i) / (
-            (dm / d - cos_i) * (cb * cos_o + sb * sin_o)
+        ratio = (
+            (dm / d + cos_o)
+            * (cb * cos_i + sb * sin_i)
+            / ((dm / d - cos_i) * (cb * cos_o + sb * sin_o))
         )
         wc = omega_i / (1 + ratio)
         wr = wc * (dm / d + cos_o) / (cb * cos_o + sb * sin_o)
@@ -112,7 +126,8 @@ class ReferenceBearing:
         z, d = self.z, self.d
         x = np.zeros(2 + 4 * z)
         q = max(fa, 1.0) / (z * math.sin(self.alpha0) + 1e-9)
-        kn = 1.0 / (self.k_inner(self.alpha0) ** (-2 / 3) + self.k_outer(self.alpha0) ** (-2 / 3)) ** 1.5
+        ki0, ko0 = self.k_inner(self.alpha0), self.k_outer(self.alpha0)
+        kn = 1.0 / (ki0 ** (-2 / 3) + ko0 ** (-2 / 3)) ** 1.5
         delta = (q / kn) ** (2 / 3)
         dz = (self.a + delta) * math.sin(self.alpha0) + 1e-6
         x[1] = dz
@@ -121,14 +136,16 @@ class ReferenceBearing:
         do = (q / self.k_outer(self.alpha0)) ** (2 / 3)
         ro = (self.fo - 0.5) * d + do
         for j in range(z):
-            x[2 + 4 * j : 6 + 4 * j] = [ro * math.sin(self.alpha0), ro * math.cos(self.alpha0), di, do]
+            sa, ca = math.sin(self.alpha0), math.cos(self.alpha0)
+            x[2 + 4 * j : 6 + 4 * j] = [ro * sa, ro * ca, di, do]
         return x
 
     def solve(self, fa, fr, speed_rpm, gyro=True, centrifugal=True, x0=None):
         omega = speed_rpm * math.pi / 30
         x0 = self.static_start(fa, fr) if x0 is None else x0
-        sol, info, ier, msg = fsolve(self.residual, x0, args=(fa, fr, omega, gyro, centrifugal),
-                                     full_output=True, xtol=1e-12)
+        sol, info, ier, msg = fsolve(
+            self.residual, x0, args=(fa, fr, omega, gyro, centrifugal), full_output=True, xtol=1e-12
+        )
         res = np.max(np.abs(self.residual(sol, fa, fr, omega, gyro, centrifugal)))
         if ier != 1 and res > 1e-6:
             raise RuntimeError(f"fsolve: {msg} (residual {res:.2e})")
