@@ -14,6 +14,7 @@
 pub mod bearing;
 pub mod effects;
 pub mod error;
+pub mod gear;
 pub mod materials;
 pub mod units;
 
