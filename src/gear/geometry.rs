@@ -277,7 +277,10 @@ impl GearPair {
 
     /// Polar inertias [pinion, gear] [kg m^2].
     pub fn polar_inertia_kg_m2(&self) -> [f64; 2] {
-        [self.spec.wheels[0].polar_inertia_kg_m2, self.spec.wheels[1].polar_inertia_kg_m2]
+        [
+            self.spec.wheels[0].polar_inertia_kg_m2,
+            self.spec.wheels[1].polar_inertia_kg_m2,
+        ]
     }
 
     /// Torque on the pinion [N m].
@@ -340,7 +343,12 @@ fn validate_spec(s: &GearPairSpec) -> Result<()> {
             ));
         }
         finite(&format!("{name}_profile_shift_coeff"), w.profile_shift_coeff)?;
-        in_range(&format!("{name}_tip_alteration_coeff"), w.tip_alteration_coeff, -1.0, 0.5)?;
+        in_range(
+            &format!("{name}_tip_alteration_coeff"),
+            w.tip_alteration_coeff,
+            -1.0,
+            0.5,
+        )?;
         positive(&format!("{name}_mass_kg"), w.mass_kg)?;
         positive(&format!("{name}_polar_inertia_kg_m2"), w.polar_inertia_kg_m2)?;
         if let Some(rb) = w.bore_radius_m {
@@ -351,7 +359,11 @@ fn validate_spec(s: &GearPairSpec) -> Result<()> {
     positive("face_width_m", s.face_width_m)?;
     let an = s.normal_pressure_angle_rad;
     if !(an > 0.0 && an <= 45f64.to_radians()) {
-        return Err(Error::config("normal_pressure_angle_rad", an, "must lie in (0, 45 deg]"));
+        return Err(Error::config(
+            "normal_pressure_angle_rad",
+            an,
+            "must lie in (0, 45 deg]",
+        ));
     }
     let b = s.helix_angle_rad;
     if !(b.is_finite() && (0.0..45f64.to_radians()).contains(&b)) {
@@ -422,7 +434,11 @@ pub fn plausibility_error(s: &GearPairSpec) -> Result<()> {
             } else {
                 format!("exceeds m r_a^2 = {i_max:.3e} kg m^2, impossible for this mass and size")
             };
-            return Err(Error::config(format!("{name}_polar_inertia_kg_m2"), w.polar_inertia_kg_m2, hint));
+            return Err(Error::config(
+                format!("{name}_polar_inertia_kg_m2"),
+                w.polar_inertia_kg_m2,
+                hint,
+            ));
         }
     }
     Ok(())
@@ -468,7 +484,10 @@ fn derive(s: &GearPairSpec) -> Result<GearGeometry> {
         r[0] + mn * (s.addendum_coeff + x[0] + k[0]),
         r[1] + mn * (s.addendum_coeff + x[1] + k[1]),
     ];
-    let rf = [r[0] - mn * (s.dedendum_coeff - x[0]), r[1] - mn * (s.dedendum_coeff - x[1])];
+    let rf = [
+        r[0] - mn * (s.dedendum_coeff - x[0]),
+        r[1] - mn * (s.dedendum_coeff - x[1]),
+    ];
     let psi_b = [
         (PI / 2.0 + 2.0 * x[0] * an.tan()) / z[0] + involute(at),
         (PI / 2.0 + 2.0 * x[1] * an.tan()) / z[1] + involute(at),
@@ -749,7 +768,11 @@ pub(crate) mod tests {
         assert!(close(g.transverse_pressure_angle_rad.to_degrees(), 20.284, 5e-4));
         assert!(close(g.operating_pressure_angle_rad.to_degrees(), 22.856, 1e-3));
         assert!(close(g.base_helix_angle_rad.to_degrees(), 9.391, 5e-4));
-        assert!(close(g.centre_distance_m * 1e3, 861.000, 0.01), "{}", g.centre_distance_m);
+        assert!(
+            close(g.centre_distance_m * 1e3, 861.000, 0.01),
+            "{}",
+            g.centre_distance_m
+        );
         assert!(close(g.reference_centre_distance_m * 1e3, 845.850, 5e-3));
         assert!(close(2e3 * g.base_radius_m[0], 320.026, 5e-3));
         assert!(close(2e3 * g.base_radius_m[1], 1266.770, 5e-3));
@@ -759,7 +782,11 @@ pub(crate) mod tests {
         assert!(close(2e3 * g.root_radius_m[1], 1334.252, 0.01));
         assert!(close(2e3 * g.operating_pitch_radius_m[0], 347.294, 0.01));
         assert!(close(g.transverse_base_pitch_m * 1e3, 41.891, 5e-3));
-        assert!(close(g.path_of_contact_m * 1e3, 61.276, 0.02), "{}", g.path_of_contact_m);
+        assert!(
+            close(g.path_of_contact_m * 1e3, 61.276, 0.02),
+            "{}",
+            g.path_of_contact_m
+        );
         assert!(close(g.transverse_contact_ratio, 1.463, 1e-3));
         assert!(close(g.overlap_ratio, 1.421, 1e-3));
         assert!(close(g.virtual_teeth[0], 25.037, 1e-3));
@@ -774,8 +801,8 @@ pub(crate) mod tests {
 
     #[test]
     fn involute_inverse_round_trips() {
-        for deg in [0.5, 5.0, 14.5, 20.0, 22.856, 35.0, 60.0] {
-            let a = (deg as f64).to_radians();
+        for deg in [0.5f64, 5.0, 14.5, 20.0, 22.856, 35.0, 60.0] {
+            let a = deg.to_radians();
             let back = inverse_involute(involute(a)).unwrap();
             assert!((back - a).abs() < 1e-12, "{deg}: {back}");
         }
@@ -791,7 +818,9 @@ pub(crate) mod tests {
         assert!((g.centre_distance_m - g.reference_centre_distance_m).abs() < 1e-12);
         assert!((g.operating_pressure_angle_rad - g.transverse_pressure_angle_rad).abs() < 1e-12);
         // Closed forms: tan(beta_b) = tan(beta) cos(alpha_t); sin(beta_b) = sin(beta) cos(alpha_n).
-        assert!((g.base_helix_angle_rad.sin() - s.helix_angle_rad.sin() * s.normal_pressure_angle_rad.cos()).abs() < 1e-12);
+        assert!(
+            (g.base_helix_angle_rad.sin() - s.helix_angle_rad.sin() * s.normal_pressure_angle_rad.cos()).abs() < 1e-12
+        );
         // eps_beta = b tan(beta_b) / p_bt (overlap along the plane of action).
         let eb = s.face_width_m * g.base_helix_angle_rad.tan() / g.transverse_base_pitch_m;
         assert!((eb - g.overlap_ratio).abs() < 1e-12);
@@ -851,7 +880,10 @@ pub(crate) mod tests {
         let mut s = GearPairSpec::seed_electric_drive();
         s.wheels[0].polar_inertia_kg_m2 = 0.1152; // t mm^2 number given as kg m^2
         let e = GearPair::new(s).unwrap_err().to_string();
-        assert!(e.contains("pinion_polar_inertia_kg_m2") && e.contains("1.1520e-4"), "{e}");
+        assert!(
+            e.contains("pinion_polar_inertia_kg_m2") && e.contains("1.1520e-4"),
+            "{e}"
+        );
     }
 
     #[test]

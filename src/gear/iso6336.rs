@@ -3,11 +3,10 @@
 //! c_gamma_beta.
 //!
 //! * Theoretical single stiffness c'_th = 1 / q', with the flexibility
-//!   q' = C1 + C2/z_n1 + C3/z_n2 + C4 x1 + C5 x1/z_n1 + C6 x2 + C7 x2/z_n2
-//!   + C8 x1^2 + C9 x2^2  [mm um / N] (ISO 6336-1 eq. for q', Table of C1..C9:
-//!   0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188,
-//!   0.00529, 0.00182), z_n the virtual tooth numbers; ISO states it for
-//!   x1 >= x2 and -0.5 <= x1 + x2 <= 2.
+//!   q' = C1 + C2/z_n1 + C3/z_n2 + C4 x1 + C5 x1/z_n1 + C6 x2 + C7 x2/z_n2 +
+//!   C8 x1^2 + C9 x2^2 [mm um / N] (ISO 6336-1 Method B; C1..C9 in
+//!   [`Q_COEFFS`]), z_n the virtual tooth numbers; ISO states it for x1 >= x2
+//!   and x1 + x2 in [-0.5, 2].
 //! * c' = c'_th C_M C_R C_B cos(beta) with C_M = 0.8 (theory-to-measurement
 //!   correction), C_R = 1 + ln(b_s/b) / (5 exp(s_R / (5 m_n))) for webbed
 //!   blanks (1 for solid disc gears; b_s/b clamped to [0.2, 1.2],
@@ -24,7 +23,9 @@ use super::geometry::GearPair;
 use crate::error::{in_range, positive, Result};
 
 /// ISO 6336-1 Method B constants C1..C9 of the flexibility q' [mm um / N].
-pub const Q_COEFFS: [f64; 9] = [0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182];
+pub const Q_COEFFS: [f64; 9] = [
+    0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182,
+];
 
 /// Theory-to-measurement correction factor C_M (ISO 6336-1).
 pub const C_M: f64 = 0.8;
@@ -39,7 +40,10 @@ pub enum GearBlank {
     Solid,
     /// Webbed blank: web thickness / face width b_s/b, rim thickness / normal
     /// module s_R/m_n.
-    Webbed { web_to_face_ratio: f64, rim_to_module_ratio: f64 },
+    Webbed {
+        web_to_face_ratio: f64,
+        rim_to_module_ratio: f64,
+    },
 }
 
 /// Options of the ISO 6336-1 Method B stiffness.
@@ -111,7 +115,15 @@ pub fn flexibility_q(zn1: f64, zn2: f64, x1: f64, x2: f64) -> Result<f64> {
     positive("virtual_teeth_pinion", zn1)?;
     positive("virtual_teeth_gear", zn2)?;
     let c = Q_COEFFS;
-    let q = c[0] + c[1] / zn1 + c[2] / zn2 + c[3] * x1 + c[4] * x1 / zn1 + c[5] * x2 + c[6] * x2 / zn2 + c[7] * x1 * x1 + c[8] * x2 * x2;
+    let q = c[0]
+        + c[1] / zn1
+        + c[2] / zn2
+        + c[3] * x1
+        + c[4] * x1 / zn1
+        + c[5] * x2
+        + c[6] * x2 / zn2
+        + c[7] * x1 * x1
+        + c[8] * x2 * x2;
     positive("iso6336_flexibility_q", q)
 }
 
@@ -119,7 +131,10 @@ pub fn flexibility_q(zn1: f64, zn2: f64, x1: f64, x2: f64) -> Result<f64> {
 pub fn blank_factor(blank: GearBlank) -> Result<f64> {
     match blank {
         GearBlank::Solid => Ok(1.0),
-        GearBlank::Webbed { web_to_face_ratio, rim_to_module_ratio } => {
+        GearBlank::Webbed {
+            web_to_face_ratio,
+            rim_to_module_ratio,
+        } => {
             let bs = positive("web_to_face_ratio", web_to_face_ratio)?.clamp(0.2, 1.2);
             let sr = positive("rim_to_module_ratio", rim_to_module_ratio)?.max(1.0);
             Ok(1.0 + bs.ln() / (5.0 * (sr / 5.0).exp()))
@@ -183,7 +198,10 @@ mod tests {
     fn kisssoft_worked_example() {
         let pair = GearPair::new(kisssoft_nrel_stage3()).unwrap();
         let opts = IsoStiffnessOptions {
-            blank: GearBlank::Webbed { web_to_face_ratio: 0.25, rim_to_module_ratio: 5.0 },
+            blank: GearBlank::Webbed {
+                web_to_face_ratio: 0.25,
+                rim_to_module_ratio: 5.0,
+            },
             ..Default::default()
         };
         let k = iso_stiffness(&pair, &opts).unwrap();
@@ -191,7 +209,11 @@ mod tests {
         assert!((k.basic_rack_factor - 0.975).abs() < 1e-12);
         assert_eq!(k.load_factor, 1.0);
         assert!((k.single_n_per_mm_um - 13.832).abs() < 2e-3, "{}", k.single_n_per_mm_um);
-        assert!((k.mesh_alpha_n_per_mm_um - 18.632).abs() < 0.01, "{}", k.mesh_alpha_n_per_mm_um);
+        assert!(
+            (k.mesh_alpha_n_per_mm_um - 18.632).abs() < 0.01,
+            "{}",
+            k.mesh_alpha_n_per_mm_um
+        );
         assert!((k.mesh_beta_n_per_mm_um - 15.837).abs() < 0.01);
         // SI conversion: 1 N/(mm um) = 1e9 N/m^2; total = per width x b.
         assert!((k.mesh_alpha_n_per_m() - k.mesh_alpha_n_per_mm_um * 1e9 * 0.36).abs() < 1.0);
@@ -204,7 +226,10 @@ mod tests {
         assert!((basic_rack_factor(1.2, 20f64.to_radians()) - 1.0).abs() < 1e-12);
         assert_eq!(blank_factor(GearBlank::Solid).unwrap(), 1.0);
         // b_s/b = 1 means a solid blank: ln 1 = 0.
-        let full = GearBlank::Webbed { web_to_face_ratio: 1.0, rim_to_module_ratio: 3.0 };
+        let full = GearBlank::Webbed {
+            web_to_face_ratio: 1.0,
+            rim_to_module_ratio: 3.0,
+        };
         assert!((blank_factor(full).unwrap() - 1.0).abs() < 1e-15);
     }
 

@@ -237,8 +237,15 @@ impl ToothShape {
         let s_f = 2.0 * h_root;
         let theta_f = (h_root / rf).asin();
         let hfi = self.root_to_bore_ratio;
-        let coef = |c: &[f64; 6]| c[0] / (theta_f * theta_f) + c[1] * hfi * hfi + c[2] * hfi / theta_f + c[3] / theta_f + c[4] * hfi + c[5];
-        let [l, m, p, q] = [coef(&SAINSOT[0]), coef(&SAINSOT[1]), coef(&SAINSOT[2]), coef(&SAINSOT[3])];
+        let coef = |c: &[f64; 6]| {
+            c[0] / (theta_f * theta_f) + c[1] * hfi * hfi + c[2] * hfi / theta_f + c[3] / theta_f + c[4] * hfi + c[5]
+        };
+        let [l, m, p, q] = [
+            coef(&SAINSOT[0]),
+            coef(&SAINSOT[1]),
+            coef(&SAINSOT[2]),
+            coef(&SAINSOT[3]),
+        ];
         let u_f = x_c - h_c * a1.tan() - rf;
         let ratio = u_f / s_f;
         let foundation = a1.cos().powi(2) / e * (l * ratio * ratio + m * ratio + p * (1.0 + q * a1.tan().powi(2)));
@@ -289,7 +296,10 @@ pub fn pair_compliance(pair: &GearPair, s_m: f64, quadrature_intervals: usize) -
     let n = quadrature_intervals.max(8);
     Ok(PairCompliance {
         hertz: 4.0 * (1.0 - nu * nu) / (PI * e),
-        teeth: [shapes[0].compliance(rho[0], e, nu, n), shapes[1].compliance(rho[1], e, nu, n)],
+        teeth: [
+            shapes[0].compliance(rho[0], e, nu, n),
+            shapes[1].compliance(rho[1], e, nu, n),
+        ],
     })
 }
 
@@ -311,7 +321,11 @@ impl PathTable {
             let prev = cumulative[i - 1];
             cumulative.push(prev + 0.5 * ds * (k[i - 1] + k[i]));
         }
-        PathTable { ds_m: ds, k, cumulative }
+        PathTable {
+            ds_m: ds,
+            k,
+            cumulative,
+        }
     }
 
     fn path_m(&self) -> f64 {
@@ -380,10 +394,18 @@ fn mesh_table(pair: &GearPair, path: &PathTable, points: usize) -> Vec<f64> {
 
 fn check_options(opts: &MeshOptions) -> Result<()> {
     if opts.table_points < 8 {
-        return Err(Error::config("table_points", opts.table_points, "at least 8 samples per mesh period"));
+        return Err(Error::config(
+            "table_points",
+            opts.table_points,
+            "at least 8 samples per mesh period",
+        ));
     }
     if opts.path_points < 3 {
-        return Err(Error::config("path_points", opts.path_points, "at least 3 points along the path"));
+        return Err(Error::config(
+            "path_points",
+            opts.path_points,
+            "at least 3 points along the path",
+        ));
     }
     Ok(())
 }
@@ -435,7 +457,11 @@ impl MeshStiffness {
     /// A user table of k_m at phases i / n, i = 0..n [N/m].
     pub fn from_samples(samples_n_per_m: Vec<f64>) -> Result<Self> {
         if samples_n_per_m.len() < 2 {
-            return Err(Error::config("mesh_stiffness_samples", samples_n_per_m.len(), "need at least 2 samples"));
+            return Err(Error::config(
+                "mesh_stiffness_samples",
+                samples_n_per_m.len(),
+                "need at least 2 samples",
+            ));
         }
         for &v in &samples_n_per_m {
             positive("mesh_stiffness_n_per_m", v)?;
@@ -478,9 +504,10 @@ impl MeshStiffness {
         self.max_n_per_m() - self.min_n_per_m()
     }
 
-    /// Fourier series of the table: k(phi) = mean + sum_k a_k cos(2 pi k phi)
-    /// + b_k sin(2 pi k phi), k = 1..=harmonics (discrete Fourier transform of
-    /// the stored table; harmonics above len/2 alias and are returned as 0).
+    /// Fourier series of the table: k(phi) = mean + sum over k of
+    /// [a_k cos(2 pi k phi) + b_k sin(2 pi k phi)], k = 1..=harmonics
+    /// (discrete Fourier transform of the stored table; harmonics above
+    /// len/2 alias and are returned as 0).
     pub fn fourier(&self, harmonics: usize) -> (f64, Vec<(f64, f64)>) {
         fourier_of(&self.table_n_per_m, harmonics)
     }
@@ -562,7 +589,11 @@ impl TransmissionError {
     /// A user series over one mesh period [m] (at least 2 finite values).
     pub fn from_samples(samples_m: Vec<f64>) -> Result<Self> {
         if samples_m.len() < 2 {
-            return Err(Error::config("transmission_error_samples", samples_m.len(), "need at least 2 samples"));
+            return Err(Error::config(
+                "transmission_error_samples",
+                samples_m.len(),
+                "need at least 2 samples",
+            ));
         }
         for &v in &samples_m {
             finite("transmission_error_m", v)?;
@@ -659,7 +690,10 @@ mod tests {
             }
         }
         let frac = double as f64 / n as f64;
-        assert!((frac - f2).abs() < 2.0 / n as f64 + 1e-9, "double-contact fraction {frac} vs eps-1 = {f2}");
+        assert!(
+            (frac - f2).abs() < 2.0 / n as f64 + 1e-9,
+            "double-contact fraction {frac} vs eps-1 = {f2}"
+        );
         // Single-contact stiffness is the one tooth pair alone: the
         // double-contact level roughly doubles it (two pairs in parallel).
         let ratio = k.max_n_per_m() / k.min_n_per_m();
@@ -694,7 +728,10 @@ mod tests {
             let c1 = iso.single_n_per_m_per_m();
             let mean_expected = c1 * p.spec.face_width_m * p.geometry.transverse_contact_ratio;
             assert!((k.mean_n_per_m() / mean_expected - 1.0).abs() < 1e-2, "{eps_beta}");
-            (k.peak_to_peak_n_per_m() / c1, k.peak_to_peak_n_per_m() / k.mean_n_per_m())
+            (
+                k.peak_to_peak_n_per_m() / c1,
+                k.peak_to_peak_n_per_m() / k.mean_n_per_m(),
+            )
         };
         let (_, spur_rel) = run(0.0);
         let (_, r1) = run(1.0);
@@ -703,7 +740,10 @@ mod tests {
         let (a05, r05) = run(0.5);
         let (a15, r15) = run(1.5);
         let (a25, r25) = run(2.5);
-        assert!((a15 - a05).abs() < 0.02 * a05 && (a25 - a05).abs() < 0.02 * a05, "{a05} {a15} {a25}");
+        assert!(
+            (a15 - a05).abs() < 0.02 * a05 && (a25 - a05).abs() < 0.02 * a05,
+            "{a05} {a15} {a25}"
+        );
         assert!(r25 < r15 && r15 < r05, "{r05} {r15} {r25}");
         assert!(r15 < spur_rel, "{r15} vs spur {spur_rel}");
     }
@@ -734,7 +774,10 @@ mod tests {
     #[test]
     fn fourier_series_reproduces_the_table() {
         let p = GearPair::preset("seed-electric-drive").unwrap();
-        let opts = MeshOptions { table_points: 64, ..quick() };
+        let opts = MeshOptions {
+            table_points: 64,
+            ..quick()
+        };
         let k = MeshStiffness::potential_energy_with(&p, &opts).unwrap();
         let (mean, c) = k.fourier(32);
         for (i, v) in k.table_n_per_m().iter().enumerate() {
@@ -753,39 +796,42 @@ mod tests {
         assert!((k.at(1.25) - k.at(0.25)).abs() < 1e-6);
     }
 
-    /// ISO 6336-1 c_gamma_alpha is an empirical mean mesh stiffness
-    /// (measurements, C_M = 0.8 included); the energy method is
-    /// theoretical. Published comparisons (e.g. ISO's C_M itself, the 0.8
-    /// ratio of measured to theoretical) put the two within about 30 %: we
-    /// require 0.7 < mean / (c_gamma_alpha b) < 1.5.
+    /// ISO 6336-1 c_gamma_alpha is an empirical mean mesh stiffness that
+    /// includes C_M = 0.8, ISO's ratio of measured to theoretical stiffness;
+    /// the energy method is theoretical, so it may exceed c_gamma_alpha by up
+    /// to 1/C_M = 1.25, plus about 10 % for the scatter of the q' regression.
+    /// We require 0.75 < mean / (c_gamma_alpha b) < 1.35 (seed pair: 1.21;
+    /// spur 25/40: 0.94).
     #[test]
     fn energy_mean_agrees_with_iso_mesh_stiffness() {
         let p = GearPair::preset("seed-electric-drive").unwrap();
         let k = MeshStiffness::potential_energy_with(&p, &quick()).unwrap();
         let iso = iso_stiffness(&p, &IsoStiffnessOptions::default()).unwrap();
         let ratio = k.mean_n_per_m() / iso.mesh_alpha_n_per_m();
-        assert!(ratio > 0.7 && ratio < 1.5, "mean/ISO = {ratio}");
+        assert!(ratio > 0.75 && ratio < 1.35, "mean/ISO = {ratio}");
         let s = spur(25, 40, 3.0, 20.0);
         let ks = MeshStiffness::potential_energy_with(&s, &quick()).unwrap();
         let iso_s = iso_stiffness(&s, &IsoStiffnessOptions::default()).unwrap();
         let ratio_s = ks.mean_n_per_m() / iso_s.mesh_alpha_n_per_m();
-        assert!(ratio_s > 0.7 && ratio_s < 1.5, "spur mean/ISO = {ratio_s}");
+        assert!(ratio_s > 0.75 && ratio_s < 1.35, "spur mean/ISO = {ratio_s}");
     }
 
     /// Single tooth-pair stiffness of a spur pair at the pitch point against
-    /// ISO 6336-1's theoretical single stiffness c'_th = 1/q' (an independent,
-    /// FE-and-measurement-based fit): within 25 %.
+    /// ISO 6336-1's single stiffness c' (the maximum stiffness of one real
+    /// tooth pair per unit face width, an independent regression of FE and
+    /// measurements): within 15 %. For 25/40 teeth, m = 3 mm, 20 deg the
+    /// energy method gives 1.25e10 N/m per m against c' = 13.0 N/(mm um).
     #[test]
-    fn pitch_point_pair_stiffness_matches_iso_theoretical() {
+    fn pitch_point_pair_stiffness_matches_iso_single_stiffness() {
         let p = spur(25, 40, 3.0, 20.0);
         let g = &p.geometry;
         let s_pitch = g.t1_to_t2_m * g.base_radius_m[0] / (g.base_radius_m[0] + g.base_radius_m[1]) - g.t1_to_start_m;
         let c = pair_compliance(&p, s_pitch, 64).unwrap();
         let k = c.stiffness_n_per_m_per_m();
         let iso = iso_stiffness(&p, &IsoStiffnessOptions::default()).unwrap();
-        let cth = iso.theoretical_single_n_per_mm_um * 1e9;
-        assert!((k / cth - 1.0).abs() < 0.25, "k = {k:.4e}, c'_th = {cth:.4e}");
-        // Every term is positive; bending dominates the tooth terms.
+        let c1 = iso.single_n_per_m_per_m();
+        assert!((k / c1 - 1.0).abs() < 0.15, "k = {k:.4e}, c' = {c1:.4e}");
+        // Every compliance term is positive.
         for t in c.teeth {
             assert!(t.bending > 0.0 && t.shear > 0.0 && t.axial >= 0.0 && t.foundation > 0.0);
         }
