@@ -622,6 +622,7 @@ impl TransmissionError {
                 .enumerate()
                 .map(|(k, &(a, p))| a * (2.0 * PI * (k + 1) as f64 * mesh_phase + p).cos())
                 .sum(),
+            TransmissionError::Samples(s) if s.is_empty() => 0.0,
             TransmissionError::Samples(s) => periodic_linear(s, mesh_phase),
         }
     }
