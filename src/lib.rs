@@ -15,6 +15,7 @@ pub mod bearing;
 pub mod config;
 pub mod effects;
 pub mod error;
+pub mod gear;
 pub mod materials;
 pub mod units;
 
