@@ -40,7 +40,7 @@ pub const HARRIS_PRINTED_FILM: f64 = 0.0332;
 /// `ha = 2.3e-5 (T1 - T2)^0.25` without units; with Harris' mm-based SI
 /// (W/(mm^2 K^1.25)) this is 23 W/(m^2 K^1.25), i.e. h = 41 W/(m^2 K) at a
 /// 10 K difference; a plain laminar air correlation (McAdams, horizontal
-/// cylinder, h = 1.32 (dT/D)^0.25) gives about 5 W/(m^2 K) for D = 0.1 m, so
+/// cylinder, h = 1.32 (dT/D)^0.25) gives about 4 W/(m^2 K) for D = 0.1 m, so
 /// the seed's value includes radiation and oil splash or is a units slip.
 pub const SEED_A_NATURAL_W_M2_K125: f64 = 23.0;
 
@@ -697,6 +697,7 @@ fn newton(
 #[derive(Debug, Clone)]
 pub struct SteadySolver {
     network: ThermalNetwork,
+    names: Arc<[String]>,
     pub options: NewtonOptions,
     work: Work,
     last: Option<Vec<f64>>,
@@ -708,6 +709,7 @@ impl SteadySolver {
     pub fn new(network: ThermalNetwork) -> Self {
         let work = Work::new(&network);
         SteadySolver {
+            names: network.names(),
             network,
             options: NewtonOptions::default(),
             work,
@@ -800,7 +802,7 @@ impl SteadySolver {
         self.last_iterations = it;
         self.last = Some(t.clone());
         Ok(Temperatures {
-            names: net.names(),
+            names: self.names.clone(),
             temperatures_c: t,
         })
     }
@@ -821,7 +823,7 @@ impl SteadySolver {
     {
         positive("tolerance_k", tolerance_k)?;
         let mut temps = Temperatures {
-            names: self.network.names(),
+            names: self.names.clone(),
             temperatures_c: self
                 .last
                 .clone()
