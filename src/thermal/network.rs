@@ -1315,6 +1315,41 @@ mod tests {
     }
 
     #[test]
+    fn film_coefficient_hand_value() {
+        // h = 0.332 k Pr^(1/3) sqrt(u / (nu x)) with k = 0.13, Pr = 400,
+        // nu = 30e-6, x = 0.06, u = 0.03 m * 800 rad/s = 24 m/s.
+        let law = Convection::ForcedFilm {
+            coefficient: POHLHAUSEN_LOCAL,
+            fluid_conductivity_w_mk: 0.13,
+            prandtl: 400.0,
+            kinematic_viscosity_m2_s: 30e-6,
+            length_m: 0.06,
+            velocity_per_speed_m: 0.03,
+        };
+        let hand = 0.332 * 0.13 * 400f64.cbrt() * (24.0 / (30e-6 * 0.06f64)).sqrt();
+        assert!((law.h_w_m2k(5.0, -800.0) - hand).abs() < 1e-9 * hand);
+        // Natural: h = C dT^0.25, symmetric in the sign of dT.
+        let nat = Convection::Natural {
+            coefficient_w_m2_k125: 23.0,
+        };
+        assert!((nat.h_w_m2k(-16.0, 0.0) - 46.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn massless_node_is_eliminated_in_time_constants() {
+        // C -- R1 -- (massless) -- R2 -- ambient: tau = C (R1 + R2).
+        let mut n = ThermalNetwork::new();
+        let a = n.add_node("a", 40.0).unwrap();
+        let b = n.add_node("b", 0.0).unwrap();
+        let amb = n.add_boundary("amb", 0.0).unwrap();
+        n.add_resistance("r1", a, b, 2.0).unwrap();
+        n.add_resistance("r2", b, amb, 3.0).unwrap();
+        let tau = n.time_constants_s(&[0.0; 3], 0.0).unwrap();
+        assert_eq!(tau.len(), 1);
+        assert!((tau[0] - 200.0).abs() < 1e-9);
+    }
+
+    #[test]
     fn rc_time_constant_is_c_over_g() {
         let n = rc(300.0, 1.5);
         let tau = n.time_constants_s(&[20.0, 20.0], 0.0).unwrap();
