@@ -184,7 +184,8 @@ impl ThermalOffsets {
 
 /// Radial displacement at the bore a per unit internal pressure of a ring
 /// a < r < b, and at its outside b [m/Pa] (Lamé, plane stress).
-pub fn lame_internal(a: f64, b: f64, m: &Material) -> (f64, f64) {
+pub fn lame_internal(bore_radius_m: f64, outer_radius_m: f64, m: &Material) -> (f64, f64) {
+    let (a, b) = (bore_radius_m, outer_radius_m);
     let (e, nu) = (m.youngs_modulus_pa, m.poisson_ratio);
     let d = b * b - a * a;
     (a / e * ((b * b + a * a) / d + nu), a * a / (e * d) * 2.0 * b)
@@ -193,7 +194,8 @@ pub fn lame_internal(a: f64, b: f64, m: &Material) -> (f64, f64) {
 /// Inward radial displacement at the outside c per unit external pressure
 /// of a ring a < r < c, and at its bore a [m/Pa] (Lamé, plane stress); a = 0
 /// is a solid cylinder.
-pub fn lame_external(a: f64, c: f64, m: &Material) -> (f64, f64) {
+pub fn lame_external(bore_radius_m: f64, outer_radius_m: f64, m: &Material) -> (f64, f64) {
+    let (a, c) = (bore_radius_m, outer_radius_m);
     let (e, nu) = (m.youngs_modulus_pa, m.poisson_ratio);
     let d = c * c - a * a;
     (c / e * ((c * c + a * a) / d - nu), c * c / (e * d) * 2.0 * a)
