@@ -15,14 +15,32 @@ pub enum Effect {
     GyroscopicMoment = 1,
     /// Centrifugal expansion of the rotating inner ring and shaft.
     RingCentrifugalExpansion = 2,
+    /// Thermal radial (and axial) growth of the shaft.
+    ThermalExpansionShaft = 3,
+    /// Thermal growth of the inner ring.
+    ThermalExpansionInnerRing = 4,
+    /// Thermal growth of the outer ring.
+    ThermalExpansionOuterRing = 5,
+    /// Thermal growth of the balls.
+    ThermalExpansionBalls = 6,
+    /// Thermal radial (and axial) growth of the housing.
+    ThermalExpansionHousing = 7,
+    /// Lubricant viscosity evaluated at the operating temperature (ASTM D341).
+    TemperatureDependentViscosity = 8,
 }
 
 impl Effect {
     /// Every effect, in registry order.
-    pub const ALL: [Effect; 3] = [
+    pub const ALL: [Effect; 9] = [
         Effect::CentrifugalForce,
         Effect::GyroscopicMoment,
         Effect::RingCentrifugalExpansion,
+        Effect::ThermalExpansionShaft,
+        Effect::ThermalExpansionInnerRing,
+        Effect::ThermalExpansionOuterRing,
+        Effect::ThermalExpansionBalls,
+        Effect::ThermalExpansionHousing,
+        Effect::TemperatureDependentViscosity,
     ];
 
     /// The public name.
@@ -31,6 +49,12 @@ impl Effect {
             Effect::CentrifugalForce => "centrifugal_force",
             Effect::GyroscopicMoment => "gyroscopic_moment",
             Effect::RingCentrifugalExpansion => "ring_centrifugal_expansion",
+            Effect::ThermalExpansionShaft => "thermal_expansion_shaft",
+            Effect::ThermalExpansionInnerRing => "thermal_expansion_inner_ring",
+            Effect::ThermalExpansionOuterRing => "thermal_expansion_outer_ring",
+            Effect::ThermalExpansionBalls => "thermal_expansion_balls",
+            Effect::ThermalExpansionHousing => "thermal_expansion_housing",
+            Effect::TemperatureDependentViscosity => "temperature_dependent_viscosity",
         }
     }
 
@@ -43,6 +67,24 @@ impl Effect {
             }
             Effect::RingCentrifugalExpansion => {
                 "radial growth of the rotating inner ring and shaft by centrifugal stress (A-10)"
+            }
+            Effect::ThermalExpansionShaft => {
+                "thermal growth of the shaft, pressed into the inner ring through the fit and axially (A-33..A-37)"
+            }
+            Effect::ThermalExpansionInnerRing => {
+                "thermal growth of the inner ring moving the inner groove centre outwards (A-33..A-36)"
+            }
+            Effect::ThermalExpansionOuterRing => {
+                "thermal growth of the outer ring moving the outer groove centre outwards (A-33..A-36)"
+            }
+            Effect::ThermalExpansionBalls => {
+                "thermal growth of the balls shrinking the free groove-centre gap (f_i + f_o - 1) D (A-34, A-36)"
+            }
+            Effect::ThermalExpansionHousing => {
+                "thermal growth of the housing, pulling the outer ring through the fit and axially (A-33..A-37)"
+            }
+            Effect::TemperatureDependentViscosity => {
+                "oil viscosity at the operating temperature in the viscous friction moment (ASTM D341, A-21)"
             }
         }
     }

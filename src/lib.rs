@@ -17,6 +17,7 @@ pub mod effects;
 pub mod error;
 pub mod gear;
 pub mod materials;
+pub mod thermal;
 pub mod units;
 
 #[cfg(feature = "python")]

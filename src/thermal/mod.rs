@@ -1,0 +1,19 @@
+//! Thermal building blocks (PHYSICS.md sections 4 and 5): lubricant
+//! properties, bearing friction heat, a general thermal resistance network
+//! with steady and transient solvers, thermal expansion of shaft, rings,
+//! balls and housing, and ready-made networks for the two seed studies.
+//!
+//! The coupled fixed point (heat <-> temperatures <-> geometry <-> loads)
+//! is meant to be a thin loop over these pieces: per-contact data in
+//! [`heat::bearing_heat`], [`network::SteadySolver::solve`] with a warm
+//! start, [`expansion::thermal_offsets`] back to the groove-centre geometry.
+
+pub mod expansion;
+pub mod heat;
+pub mod lubricant;
+pub mod network;
+pub mod presets;
+
+pub use heat::{bearing_heat, BearingHeat, HeatSplit, SpinContact};
+pub use lubricant::Lubricant;
+pub use network::{Convection, SteadySolver, Temperatures, ThermalNetwork, Transient, TransientSolver};
