@@ -2,8 +2,16 @@
 //! and stiffness.
 
 pub mod contact;
+pub mod dual;
 pub mod geometry;
+pub mod kinematics;
+pub mod model;
 pub mod presets;
+pub mod quasi_static;
+pub mod state;
+pub mod statics;
+pub mod stiffness;
+pub mod sweep;
 
 use std::f64::consts::PI;
 
@@ -11,6 +19,13 @@ use crate::error::{non_negative, Error, Result};
 use crate::materials::{reduced_modulus, Material};
 pub use contact::{HertzContact, Raceway};
 pub use geometry::{BearingGeometry, BearingType};
+pub use kinematics::{ball_kinematics, BallKinematics};
+pub use model::{BearingModel, RacewayOffsets};
+pub use quasi_static::{ring_forces, RingForces, WarmStart};
+pub use state::{BallState, BearingLoad, BearingState, GyroCoupleSign, RacewayControl, SolveOptions};
+pub use statics::{solve_static, thrust_contact_angle};
+pub use stiffness::{contact_stiffness_n_per_m, seed_stiffness};
+pub use sweep::{speed_sweep, stiffness_curve, StiffnessPoint};
 
 /// One ball bearing: internal geometry, the materials of its parts and the
 /// shaft it sits on (needed for centrifugal expansion, A-10).
