@@ -68,6 +68,7 @@ pub fn curvature(raceway: Raceway, d: f64, dm: f64, f: f64, alpha: f64) -> Curva
         Raceway::Outer => -(2.0 / d) * gamma / (1.0 + gamma),
     };
     let sum = 2.0 * rho_ball + rho_roll + rho_groove;
+    #[allow(clippy::eq_op)] // (rho_I1 - rho_II1) written out as in PHYSICS.md 2; zero for a ball
     let difference = ((rho_ball - rho_ball) + (rho_roll - rho_groove)) / sum;
     Curvature {
         sum,
@@ -140,7 +141,7 @@ pub fn ellipse(c: &Curvature) -> Result<Ellipse> {
         let h = 1e-6 * x.max(1e-3);
         let slope = (curvature_difference_of((x + h).exp()) - curvature_difference_of((x - h).exp())) / (2.0 * h);
         let mut xn = x - g / slope;
-        if !(xn > lo && xn < hi) || !xn.is_finite() {
+        if !(xn > lo && xn < hi && xn.is_finite()) {
             xn = 0.5 * (lo + hi);
         }
         if (xn - x).abs() < 1e-15 * x.max(1.0) {

@@ -20,7 +20,7 @@ use crate::materials::{reduced_modulus, Material};
 pub use contact::{HertzContact, Raceway};
 pub use geometry::{BearingGeometry, BearingType};
 pub use kinematics::{ball_kinematics, BallKinematics};
-pub use model::{BearingModel, RacewayOffsets};
+pub use model::{inner_ring_expansion_per_omega2, BearingModel, RacewayOffsets};
 pub use quasi_static::{ring_forces, RingForces, WarmStart};
 pub use state::{BallState, BearingLoad, BearingState, GyroCoupleSign, RacewayControl, SolveOptions};
 pub use statics::{solve_static, thrust_contact_angle};

@@ -127,6 +127,14 @@ impl ContactTable {
         self.ln_k.eval(c).exp()
     }
 
+    /// Hold K at its value for alpha = 0 (tests of the angle dependence).
+    #[cfg(test)]
+    pub(crate) fn freeze(&mut self) {
+        let k0 = self.ln_k.eval_f64(1.0);
+        self.ln_k.coef = [0.0; CHEB_NODES];
+        self.ln_k.coef[0] = k0;
+    }
+
     /// Semi-major axis of the contact ellipse under load q at cos(alpha) = c [m].
     pub(crate) fn semi_major_m(&self, c: f64, q: f64) -> f64 {
         if q <= 0.0 {
