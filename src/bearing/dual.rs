@@ -31,6 +31,11 @@ impl<const N: usize> Dual<N> {
 
     /// Apply a scalar function with value `f` and derivative `df` at `self.v`.
     #[inline]
+    pub fn map(self, f: f64, df: f64) -> Self {
+        self.chain(f, df)
+    }
+
+    #[inline]
     fn chain(self, f: f64, df: f64) -> Self {
         let mut d = self.d;
         for x in d.iter_mut() {

@@ -28,7 +28,7 @@
 //! The exact Hertz constants (`Bearing::inner_contact`, `outer_contact`)
 //! depend on the contact angle through gamma = D cos(alpha) / dm. They are
 //! tabulated once per bearing as Chebyshev series of ln K in c = cos(alpha)
-//! over cos(85 deg) <= c <= 1 (14 nodes; the interpolation error is below
+//! over cos(85 deg) <= c <= 1 (10 nodes; the interpolation error is below
 //! 1e-10, checked in the tests) and evaluated at the actual contact angle of
 //! each contact, in both the static and the high-speed model, so the two
 //! agree at zero speed. The semi-major-axis coefficient a / Q^(1/3) is
@@ -42,7 +42,7 @@ use super::Bearing;
 use crate::error::{Error, Result};
 
 /// Number of Chebyshev nodes per tabulated contact constant.
-const CHEB_NODES: usize = 14;
+const CHEB_NODES: usize = 10;
 /// Largest contact angle covered by the tables [deg]; beyond it the constants
 /// are held at the end value.
 const CHEB_MAX_ANGLE_DEG: f64 = 85.0;
@@ -76,31 +76,32 @@ impl ChebSeries {
         Ok(ChebSeries { c_lo, coef })
     }
 
-    /// Evaluate at c (clamped to the table range), with derivatives.
+    /// Value and derivative d/dc at c (clamped to the table range: zero
+    /// slope outside), by the three-term recurrences of T_k and T_k'.
     #[inline]
-    pub(crate) fn eval<const N: usize>(&self, c: Dual<N>) -> Dual<N> {
-        let c = if c.v > 1.0 {
-            Dual::cst(1.0)
-        } else if c.v < self.c_lo {
-            Dual::cst(self.c_lo)
-        } else {
-            c
-        };
-        let t = (c * 2.0 - (1.0 + self.c_lo)) / (1.0 - self.c_lo);
-        // Clenshaw recurrence.
-        let mut b1 = Dual::<N>::cst(0.0);
-        let mut b2 = Dual::<N>::cst(0.0);
-        for &a in self.coef.iter().skip(1).rev() {
-            let b0 = t * b1 * 2.0 - b2 + a;
-            b2 = b1;
-            b1 = b0;
+    pub(crate) fn value_slope(&self, c: f64) -> (f64, f64) {
+        if c > 1.0 || c < self.c_lo {
+            return (self.value_slope(c.clamp(self.c_lo, 1.0)).0, 0.0);
         }
-        t * b1 - b2 + self.coef[0]
+        let dt_dc = 2.0 / (1.0 - self.c_lo);
+        let t = (c - 0.5 * (1.0 + self.c_lo)) * dt_dc;
+        let (mut t0, mut t1) = (1.0, t);
+        let (mut d0, mut d1) = (0.0, 1.0);
+        let mut f = self.coef[0] + self.coef[1] * t;
+        let mut df = self.coef[1];
+        for &a in &self.coef[2..] {
+            let t2 = 2.0 * t * t1 - t0;
+            let d2 = 2.0 * t1 + 2.0 * t * d1 - d0;
+            f += a * t2;
+            df += a * d2;
+            (t0, t1, d0, d1) = (t1, t2, d1, d2);
+        }
+        (f, df * dt_dc)
     }
 
     #[inline]
     pub(crate) fn eval_f64(&self, c: f64) -> f64 {
-        self.eval::<1>(Dual::cst(c)).v
+        self.value_slope(c).0
     }
 }
 
@@ -124,7 +125,9 @@ impl ContactTable {
     /// Load-deflection constant K at cos(alpha) = c [N/m^1.5].
     #[inline]
     pub(crate) fn k<const N: usize>(&self, c: Dual<N>) -> Dual<N> {
-        self.ln_k.eval(c).exp()
+        let (l, dl) = self.ln_k.value_slope(c.v);
+        let k = l.exp();
+        c.map(k, k * dl)
     }
 
     /// Hold K at its value for alpha = 0 (tests of the angle dependence).
@@ -225,6 +228,18 @@ impl BearingModel {
     pub fn ball_constant(&self, alpha_rad: f64) -> f64 {
         let c = Dual::<1>::cst(alpha_rad.cos());
         super::contact::series_constant(self.inner.k(c).v, self.outer.k(c).v)
+    }
+
+    /// K_n(c) of A-3 with its derivative, c = cos(alpha) (both contacts at alpha).
+    #[inline]
+    pub(crate) fn kn<const N: usize>(&self, c: Dual<N>) -> Dual<N> {
+        let (li, dli) = self.inner.ln_k.value_slope(c.v);
+        let (lo, dlo) = self.outer.ln_k.value_slope(c.v);
+        let (ei, eo) = ((-2.0 / 3.0 * li).exp(), (-2.0 / 3.0 * lo).exp());
+        let a = ei + eo;
+        let da = -2.0 / 3.0 * (ei * dli + eo * dlo);
+        let kn = a.powf(-1.5);
+        c.map(kn, -1.5 * kn / a * da)
     }
 
     /// Radial growth of the inner raceway of the ring rotating at

@@ -525,7 +525,13 @@ pub(crate) fn static_start_q(model: &BearingModel, load: &[f64; 5], opts: &Solve
     if load.iter().all(|v| *v == 0.0) {
         return initial_guess(model, load);
     }
-    Ok(solve_static(model, load, opts)?.displacement_m_rad)
+    // The start need not be converged tightly: the high-speed iteration
+    // finishes the job (a loose static tolerance saves iterations).
+    let loose = SolveOptions {
+        tolerance: opts.tolerance.max(1e-4),
+        ..*opts
+    };
+    Ok(solve_static(model, load, &loose)?.displacement_m_rad)
 }
 
 impl Bearing {

@@ -40,7 +40,7 @@ pub fn thrust_contact_angle(model: &BearingModel, axial_n: f64) -> Result<f64> {
     let f = |a: f64| -> Dual<1> {
         let x = Dual::<1>::var(a, 0);
         let (s, c) = (sin_d(x), cos_d(x));
-        let kn = series_dual(model.inner.k(c), model.outer.k(c));
+        let kn = model.kn(c);
         let stretch = (c.recip() * a0.cos() - 1.0).pow1_5_pos();
         kn * s * stretch * (z * scale) - axial_n
     };
@@ -86,12 +86,6 @@ fn cos_d(x: Dual<1>) -> Dual<1> {
     }
 }
 
-/// K_n = (K_i^(-2/3) + K_o^(-2/3))^(-3/2) on dual numbers.
-#[inline]
-pub(crate) fn series_dual<const N: usize>(ki: Dual<N>, ko: Dual<N>) -> Dual<N> {
-    (ki.powf(-2.0 / 3.0) + ko.powf(-2.0 / 3.0)).powf(-1.5)
-}
-
 /// Generalised reaction (f1, f2) of a ball at zero speed on the inner ring
 /// along the groove-centre directions A1 (axial), A2 (radial), as functions
 /// of (A1, A2): f = -Q (sin a, cos a).
@@ -100,7 +94,7 @@ pub(crate) fn static_ball(model: &BearingModel, a1: f64, a2: f64) -> (Dual<2>, D
     let (x, y) = (Dual::<2>::var(a1, 0), Dual::<2>::var(a2, 1));
     let l = (x * x + y * y).sqrt();
     let (s, c) = (x / l, y / l);
-    let kn = series_dual(model.inner.k(c), model.outer.k(c));
+    let kn = model.kn(c);
     let q = kn * (l - model.a0).pow1_5_pos();
     (-(q * s), -(q * c), q)
 }
