@@ -254,7 +254,7 @@ fn solve_ball(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), prev: &mut Ba
     while it < 60 {
         let scale = (t.qi + t.qo + t.fc).max(1e-12);
         let rn = norm(&t);
-        if rn <= 1e-13 * scale {
+        if rn <= 1e-11 * scale {
             converged = true;
             break;
         }
@@ -308,7 +308,7 @@ fn solve_ball(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), prev: &mut Ba
             "ball equilibrium (A-15)",
             it,
             rn,
-            1e-13 * (t.qi + t.qo + t.fc),
+            1e-11 * (t.qi + t.qo + t.fc),
         ));
     }
     // Implicit-function condensation.
