@@ -293,3 +293,35 @@ fn unloaded_bearing_at_speed_rests_on_the_outer_raceway() {
         assert!((b.outer_load_n - b.centrifugal_force_n).abs() < 1e-9 * b.centrifugal_force_n);
     }
 }
+
+#[test]
+fn load_and_speed_grid_converges_to_equilibrium() {
+    // Light, heavy, tilting and mixed loads from standstill to 60,000 rpm:
+    // every solve converges and the ball forces balance the load.
+    let o = SolveOptions::default();
+    for name in ["6208", "7009C", "7008C-hybrid", "6208-ceramic"] {
+        let m = model(name);
+        for load in [
+            [1000.0, 0.0, 0.0, 0.0, 0.0],
+            [0.0, 0.0, 50.0, 0.0, 0.0],
+            [0.0, 0.0, 5000.0, 0.0, 0.0],
+            [2000.0, 0.0, 100.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0, 0.0, 20.0],
+            [100.0, 50.0, 300.0, 1.0, -2.0],
+            [5.0, 0.0, 0.0, 0.0, 0.0],
+        ] {
+            for n in [0.0, 10_000.0, 30_000.0, 60_000.0] {
+                let s = m
+                    .solve(&load, n, &o)
+                    .unwrap_or_else(|e| panic!("{name} {load:?} {n}: {e}"));
+                let f = ball_force_sum(&m, &s);
+                for i in 0..5 {
+                    assert!(
+                        (f[i] - load[i]).abs() < 1e-6 * (1.0 + load[i].abs()),
+                        "{name} {load:?} {n} [{i}]"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -1,5 +1,29 @@
 //! Ball bearings: geometry, Hertz contact, statics, high-speed quasi-statics
 //! and stiffness.
+//!
+//! * [`model`]: coordinates (ISO/TS 16281), [`BearingModel`] (a bearing
+//!   prepared for the solvers), [`RacewayOffsets`] (thermal/fit offsets).
+//! * [`statics`]: zero-speed solve and the thrust-only contact angle (A-4).
+//! * [`quasi_static`]: Jones-Harris high-speed solve and the forward map
+//!   q -> ring forces ([`BearingModel::ring_forces`]) for dynamics.
+//! * [`kinematics`]: raceway-control kinematics and the derivation of the
+//!   gyroscopic friction-couple sign.
+//! * [`stiffness`]: the seed's axial/radial stiffness (A-39..A-42); the full
+//!   5x5 matrix is part of every [`BearingState`].
+//! * [`sweep`]: parallel speed sweeps and stiffness curves.
+//!
+//! ```
+//! use thermobear::bearing::{BearingLoad, BearingModel, SolveOptions, stiffness_curve};
+//! use thermobear::Bearing;
+//!
+//! let b = Bearing::preset("6208").unwrap();
+//! // Seed A's 100 N m case with 300 N preload, at 16,000 rpm.
+//! let s = b.solve(BearingLoad::new(2680.9, 1189.9, 0.0), 16_000.0, &SolveOptions::default()).unwrap();
+//! assert!(s.balls.iter().all(|ball| ball.outer_load_n > ball.inner_load_n));
+//! let m = BearingModel::new(&b).unwrap();
+//! let curve = stiffness_curve(&m, &[6_500.0, 16_500.0], 2680.9, 1189.9, &SolveOptions::default()).unwrap();
+//! assert!(curve[1].axial_stiffness_n_per_m < curve[0].axial_stiffness_n_per_m);
+//! ```
 
 pub mod contact;
 pub mod dual;
