@@ -262,3 +262,48 @@ fn iso_ts_16281_reference_displacements() {
         );
     }
 }
+
+#[test]
+fn held_tilt_reports_the_holding_moment() {
+    use thermobear::bearing::Tilt;
+    let m = model("6208");
+    let load = [1189.9, 0.0, 2380.9, 0.0, 0.0];
+    // Free tilt: combined load without moment tilts the ring.
+    let free = m.solve_static(&load, &SolveOptions::default()).unwrap();
+    assert!(free.displacement_m_rad[4].abs() > 1e-4);
+    // Holding the tilt found by the free solve reproduces it with zero holding moment.
+    let at_free = SolveOptions {
+        tilt: Tilt::Fixed {
+            theta_x_rad: free.displacement_m_rad[3],
+            theta_y_rad: free.displacement_m_rad[4],
+        },
+        ..Default::default()
+    };
+    let same = m.solve_static(&load, &at_free).unwrap();
+    for i in 0..3 {
+        assert!((same.displacement_m_rad[i] - free.displacement_m_rad[i]).abs() < 1e-12);
+    }
+    assert!(same.applied_load_n_nm[4].abs() < 1e-6);
+    // Level ring: no tilt, and a holding moment equal to the ball moments.
+    let level = SolveOptions {
+        tilt: Tilt::held_level(),
+        ..Default::default()
+    };
+    let s = m.solve_static(&load, &level).unwrap();
+    assert_eq!((s.displacement_m_rad[3], s.displacement_m_rad[4]), (0.0, 0.0));
+    let f = ball_force_sum(&m, &s);
+    for i in 0..5 {
+        assert!((f[i] - s.applied_load_n_nm[i]).abs() < 1e-6 * (1.0 + f[i].abs()), "{i}");
+    }
+    // Radial load on the ball at psi = 0 raises its axial force: the
+    // moment that keeps the ring level is negative about y.
+    assert!(s.applied_load_n_nm[4] < 0.0);
+    let bad = SolveOptions {
+        tilt: Tilt::Fixed {
+            theta_x_rad: f64::INFINITY,
+            theta_y_rad: 0.0,
+        },
+        ..Default::default()
+    };
+    assert!(m.solve_static(&load, &bad).is_err());
+}

@@ -1,7 +1,7 @@
 //! Speed sweeps: determinism across thread counts, agreement with single solves.
 #![allow(clippy::needless_range_loop)]
 
-use thermobear::bearing::{speed_sweep, stiffness_curve, BearingModel, SolveOptions};
+use thermobear::bearing::{speed_sweep, stiffness_curve, BearingModel, SolveOptions, Tilt};
 use thermobear::Bearing;
 
 fn pool(n: usize) -> rayon::ThreadPool {

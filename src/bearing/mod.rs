@@ -46,7 +46,7 @@ pub use geometry::{BearingGeometry, BearingType};
 pub use kinematics::{ball_kinematics, BallKinematics};
 pub use model::{inner_ring_expansion_per_omega2, BearingModel, RacewayOffsets};
 pub use quasi_static::{ring_forces, RingForces, WarmStart};
-pub use state::{BallState, BearingLoad, BearingState, GyroCoupleSign, RacewayControl, SolveOptions};
+pub use state::{BallState, BearingLoad, BearingState, GyroCoupleSign, RacewayControl, SolveOptions, Tilt};
 pub use statics::{solve_static, thrust_contact_angle};
 pub use stiffness::{contact_stiffness_n_per_m, seed_stiffness};
 pub use sweep::{speed_sweep, stiffness_curve, StiffnessPoint};

@@ -507,7 +507,7 @@ impl BearingModel {
         let (ka, kr) = seed_stiffness(self, &balls);
         Ok(BearingState {
             displacement_m_rad: sol.q,
-            applied_load_n_nm: *load,
+            applied_load_n_nm: sol.load,
             balls,
             stiffness_matrix_si: k,
             axial_stiffness_n_per_m: ka,
@@ -523,7 +523,7 @@ impl BearingModel {
 pub(crate) fn static_start_q(model: &BearingModel, load: &[f64; 5], opts: &SolveOptions) -> Result<[f64; 5]> {
     model.check_load(load)?;
     if load.iter().all(|v| *v == 0.0) {
-        return initial_guess(model, load);
+        return initial_guess(model, load, opts);
     }
     // The start need not be converged tightly: the high-speed iteration
     // finishes the job (a loose static tolerance saves iterations).

@@ -47,6 +47,29 @@ impl GyroCoupleSign {
     }
 }
 
+/// How the ring tilt (theta_x, theta_y) is treated.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Tilt {
+    /// The tilts are unknowns balanced by the applied moments Mx, My (full
+    /// 5-DOF equilibrium; a ring under combined load without moment tilts).
+    #[default]
+    Free,
+    /// The tilts are held at the given values (a ring held by a stiff shaft
+    /// and housing, the usual 3-DOF bearing model); the applied moments are
+    /// ignored and the state reports the moments needed to hold the tilt.
+    Fixed { theta_x_rad: f64, theta_y_rad: f64 },
+}
+
+impl Tilt {
+    /// No tilt, held (seed A's axial/radial model).
+    pub fn held_level() -> Self {
+        Tilt::Fixed {
+            theta_x_rad: 0.0,
+            theta_y_rad: 0.0,
+        }
+    }
+}
+
 /// Options of the static and quasi-static solvers.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolveOptions {
@@ -63,6 +86,8 @@ pub struct SolveOptions {
     pub max_iterations: usize,
     /// Thermal or fit offsets of the groove centres. Default zero.
     pub offsets: RacewayOffsets,
+    /// Free or held ring tilt. Default: free.
+    pub tilt: Tilt,
 }
 
 impl Default for SolveOptions {
@@ -74,6 +99,7 @@ impl Default for SolveOptions {
             tolerance: 1e-9,
             max_iterations: 100,
             offsets: RacewayOffsets::default(),
+            tilt: Tilt::Free,
         }
     }
 }
@@ -151,7 +177,8 @@ pub struct BearingState {
     /// Inner-ring displacement [dx, dy, dz, theta_x, theta_y] (m, rad), ISO
     /// convention (see [`super::model`]).
     pub displacement_m_rad: [f64; 5],
-    /// Applied load [Fx, Fy, Fz, Mx, My] (N, N m).
+    /// Applied load [Fx, Fy, Fz, Mx, My] (N, N m); with a held tilt
+    /// ([`Tilt::Fixed`]) Mx, My are the moments that hold it.
     pub applied_load_n_nm: [f64; 5],
     /// Per-ball states, ball j at psi_j = 2 pi j / Z.
     pub balls: Vec<BallState>,

@@ -22,7 +22,7 @@ use nalgebra::{Matrix5, Vector5};
 
 use super::dual::Dual;
 use super::model::BearingModel;
-use super::state::{BallState, BearingState, SolveOptions};
+use super::state::{BallState, BearingState, SolveOptions, Tilt};
 use super::stiffness::seed_stiffness;
 use crate::error::{Error, Result};
 
@@ -182,7 +182,7 @@ pub(crate) fn static_balls(model: &BearingModel, q: &[f64; 5], opts: &SolveOptio
 pub fn solve_static(model: &BearingModel, load: &[f64; 5], opts: &SolveOptions) -> Result<BearingState> {
     model.check_load(load)?;
     check_options(opts)?;
-    let q0 = initial_guess(model, load)?;
+    let q0 = initial_guess(model, load, opts)?;
     let sol = solve_ring(model, load, q0, opts, "static bearing equilibrium", &mut |q| {
         Ok(static_ring(model, q, opts))
     })?;
@@ -190,7 +190,7 @@ pub fn solve_static(model: &BearingModel, load: &[f64; 5], opts: &SolveOptions) 
     let (ka, kr) = seed_stiffness(model, &balls);
     Ok(BearingState {
         displacement_m_rad: sol.q,
-        applied_load_n_nm: *load,
+        applied_load_n_nm: sol.load,
         balls,
         stiffness_matrix_si: sol.k,
         axial_stiffness_n_per_m: ka,
@@ -208,6 +208,14 @@ pub(crate) fn check_options(opts: &SolveOptions) -> Result<()> {
     }
     crate::error::finite("offsets.axial_m", opts.offsets.axial_m)?;
     crate::error::finite("offsets.radial_m", opts.offsets.radial_m)?;
+    if let Tilt::Fixed {
+        theta_x_rad,
+        theta_y_rad,
+    } = opts.tilt
+    {
+        crate::error::finite("theta_x_rad", theta_x_rad)?;
+        crate::error::finite("theta_y_rad", theta_y_rad)?;
+    }
     Ok(())
 }
 
@@ -215,7 +223,7 @@ pub(crate) fn check_options(opts: &SolveOptions) -> Result<()> {
 /// carry the load: axial part from the thrust solution, radial part
 /// from Stribeck's Q_max = 5 Fr / Z plus the radial clearance, tilt from
 /// the thrust solution for the equivalent axial load 4 M / R_i.
-pub(crate) fn initial_guess(model: &BearingModel, load: &[f64; 5]) -> Result<[f64; 5]> {
+pub(crate) fn initial_guess(model: &BearingModel, load: &[f64; 5], opts: &SolveOptions) -> Result<[f64; 5]> {
     let z = model.ball_count() as f64;
     let mut q = [0.0; 5];
     let fa = load[2].abs();
@@ -242,7 +250,20 @@ pub(crate) fn initial_guess(model: &BearingModel, load: &[f64; 5]) -> Result<[f6
         q[3] = theta * load[3] / m;
         q[4] = theta * load[4] / m;
     }
-    Ok(q)
+    Ok(hold_tilt(q, opts))
+}
+
+/// q with the held tilt of `opts` (unchanged for a free tilt).
+pub(crate) fn hold_tilt(mut q: [f64; 5], opts: &SolveOptions) -> [f64; 5] {
+    if let Tilt::Fixed {
+        theta_x_rad,
+        theta_y_rad,
+    } = opts.tilt
+    {
+        q[3] = theta_x_rad;
+        q[4] = theta_y_rad;
+    }
+    q
 }
 
 /// Ring evaluation: q -> (reaction, K = -d reaction / dq).
@@ -252,6 +273,9 @@ pub(crate) type RingEval<'a> = dyn FnMut(&[f64; 5]) -> Result<([f64; 5], [[f64; 
 #[derive(Debug, Clone)]
 pub(crate) struct RingSolution {
     pub q: [f64; 5],
+    /// The load balanced at q: the applied load, with the holding moments
+    /// in place of Mx, My when the tilt is held.
+    pub load: [f64; 5],
     pub k: [[f64; 5]; 5],
     pub iterations: usize,
     pub residual: f64,
@@ -271,9 +295,21 @@ pub(crate) fn solve_ring(
 ) -> Result<RingSolution> {
     let r = model.r_groove;
     let scale = [1.0, 1.0, 1.0, r, r];
-    let load_ref = (0..5).map(|i| (load[i] / scale[i]).abs()).fold(1.0, f64::max);
+    let held = matches!(opts.tilt, Tilt::Fixed { .. });
+    let free = [true, true, true, !held, !held];
+    let q0 = hold_tilt(q0, opts);
+    let load_ref = (0..5)
+        .filter(|i| free[*i])
+        .map(|i| (load[i] / scale[i]).abs())
+        .fold(1.0, f64::max);
     let norms = |reaction: &[f64; 5]| -> (Vector5<f64>, f64) {
-        let g = Vector5::from_fn(|i, _| (load[i] + reaction[i]) / scale[i]);
+        let g = Vector5::from_fn(|i, _| {
+            if free[i] {
+                (load[i] + reaction[i]) / scale[i]
+            } else {
+                0.0
+            }
+        });
         let n = g.amax() / load_ref;
         (g, n)
     };
@@ -287,8 +323,10 @@ pub(crate) fn solve_ring(
     let (mut g, mut res) = norms(&reaction);
     for it in 0..=opts.max_iterations {
         if res <= opts.tolerance {
+            let balanced = std::array::from_fn(|i| if free[i] { load[i] } else { -reaction[i] });
             return Ok(RingSolution {
                 q,
+                load: balanced,
                 k,
                 iterations: it,
                 residual: res,
@@ -297,7 +335,11 @@ pub(crate) fn solve_ring(
         if it == opts.max_iterations {
             break;
         }
-        let ks = Matrix5::from_fn(|i, j| k[i][j] / (scale[i] * scale[j]));
+        let ks = Matrix5::from_fn(|i, j| match (free[i], free[j]) {
+            (true, true) => k[i][j] / (scale[i] * scale[j]),
+            _ if i == j => 1.0,
+            _ => 0.0,
+        });
         let diag_max = (0..5).map(|i| ks[(i, i)].abs()).fold(0.0, f64::max);
         let no_contact = diag_max <= 0.0;
         let mu = if no_contact { k_ref } else { 1e-12 * diag_max };
@@ -328,7 +370,6 @@ pub(crate) fn solve_ring(
             return Err(Error::convergence(solver, it, res, opts.tolerance));
         }
     }
-    let _ = reaction;
     Err(Error::convergence(solver, opts.max_iterations, res, opts.tolerance))
 }
 
