@@ -31,20 +31,22 @@ fn sweeps_are_identical_for_any_thread_count() {
 #[test]
 fn seed_a_stiffness_trend_with_speed() {
     // Seed A Fig. 11 (no thermal effect), 100 N m torque case with 300 N
-    // preload: radial stiffness rises slowly with speed, axial stiffness
-    // falls slightly (centrifugal force lowers the outer contact angle).
+    // preload: axial stiffness falls slightly with speed (centrifugal force
+    // lowers the outer contact angle). The seed also reports a slowly rising
+    // radial stiffness; our radial stiffness stays within 0.5 % (see report).
     let m = BearingModel::new(&Bearing::preset("6208").unwrap()).unwrap();
-    let c = stiffness_curve(
-        &m,
-        &[6_500.0, 11_500.0, 16_500.0],
-        2680.9,
-        1189.9,
-        &SolveOptions::default(),
-    )
-    .unwrap();
-    assert!(c[0].axial_stiffness_n_per_m > c[1].axial_stiffness_n_per_m);
-    assert!(c[1].axial_stiffness_n_per_m > c[2].axial_stiffness_n_per_m);
-    assert_eq!(c[0].inner_contact_angles_rad.len(), 9);
+    for tilt in [Tilt::Free, Tilt::held_level()] {
+        let o = SolveOptions {
+            tilt,
+            ..Default::default()
+        };
+        let c = stiffness_curve(&m, &[6_500.0, 11_500.0, 16_500.0], 2680.9, 1189.9, &o).unwrap();
+        assert!(c[0].axial_stiffness_n_per_m > c[1].axial_stiffness_n_per_m);
+        assert!(c[1].axial_stiffness_n_per_m > c[2].axial_stiffness_n_per_m);
+        assert_eq!(c[0].inner_contact_angles_rad.len(), 9);
+        // The outer contact angle of the most loaded ball falls with speed.
+        assert!(c[2].outer_contact_angles_rad[0] < c[0].outer_contact_angles_rad[0]);
+    }
     // Bad input is an error, not NaN.
     assert!(stiffness_curve(&m, &[f64::NAN], 100.0, 0.0, &SolveOptions::default()).is_err());
 }
