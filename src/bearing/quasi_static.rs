@@ -44,7 +44,7 @@ use super::dual::Dual;
 use super::kinematics::{ball_kinematics, kinematics};
 use super::model::BearingModel;
 use super::state::{BallState, BearingState, RacewayControl, SolveOptions};
-use super::statics::{check_options, initial_guess, solve_ring, solve_static};
+use super::statics::{check_options, initial_guess, solve_ring, solve_static, static_displacement};
 use super::stiffness::seed_stiffness;
 use super::Bearing;
 use crate::effects::Effect;
@@ -531,7 +531,7 @@ pub(crate) fn static_start_q(model: &BearingModel, load: &[f64; 5], opts: &Solve
         tolerance: opts.tolerance.max(1e-4),
         ..*opts
     };
-    Ok(solve_static(model, load, &loose)?.displacement_m_rad)
+    Ok(static_displacement(model, load, &loose)?.q)
 }
 
 impl Bearing {

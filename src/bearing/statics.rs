@@ -52,7 +52,13 @@ pub fn thrust_contact_angle(model: &BearingModel, axial_n: f64) -> Result<f64> {
             "thrust load drives the contact angle beyond 85 deg",
         ));
     }
-    let mut a = 0.5 * (lo + hi);
+    // Small-angle estimate of A-4, sin a (cos a0 / cos a - 1)^1.5 ~
+    // a ((a^2 - a0^2) / 2)^1.5, taken 10 % high: f is convex and increasing
+    // there, so Newton from above approaches the root monotonically.
+    let c = axial_n / (z * model.ball_constant(a0) * scale);
+    let a_small = (2f64.powf(1.5) * c).powf(0.25);
+    let a_est = (a0 * a0 + 2.0 * (c / a_small.max(a0)).powf(2.0 / 3.0)).sqrt();
+    let mut a = (1.1 * a_est.max(a_small)).clamp(lo + 1e-9, hi);
     for _ in 0..200 {
         let r = f(a);
         if r.v > 0.0 {
@@ -180,12 +186,7 @@ pub(crate) fn static_balls(model: &BearingModel, q: &[f64; 5], opts: &SolveOptio
 /// Solve the zero-speed equilibrium for the load [Fx, Fy, Fz, Mx, My]
 /// (N, N m) on the inner ring.
 pub fn solve_static(model: &BearingModel, load: &[f64; 5], opts: &SolveOptions) -> Result<BearingState> {
-    model.check_load(load)?;
-    check_options(opts)?;
-    let q0 = initial_guess(model, load, opts)?;
-    let sol = solve_ring(model, load, q0, opts, "static bearing equilibrium", &mut |q| {
-        Ok(static_ring(model, q, opts))
-    })?;
+    let sol = static_displacement(model, load, opts)?;
     let balls = static_balls(model, &sol.q, opts);
     let (ka, kr) = seed_stiffness(model, &balls);
     Ok(BearingState {
@@ -198,6 +199,16 @@ pub fn solve_static(model: &BearingModel, load: &[f64; 5], opts: &SolveOptions) 
         iterations: sol.iterations,
         residual: sol.residual,
         speed_rpm: 0.0,
+    })
+}
+
+/// The zero-speed ring equilibrium only (no per-ball output).
+pub(crate) fn static_displacement(model: &BearingModel, load: &[f64; 5], opts: &SolveOptions) -> Result<RingSolution> {
+    model.check_load(load)?;
+    check_options(opts)?;
+    let q0 = initial_guess(model, load, opts)?;
+    solve_ring(model, load, q0, opts, "static bearing equilibrium", &mut |q| {
+        Ok(static_ring(model, q, opts))
     })
 }
 

@@ -60,7 +60,10 @@ impl From<&BearingState> for StiffnessPoint {
 }
 
 /// Stiffness versus speed under an axial and a radial load (seed A Fig. 11).
-/// Fails with the first speed's error if any speed does not solve.
+/// Fails with the first speed's error if any speed does not solve. With the
+/// default free tilt the ring tilts under the combined load; pass
+/// `tilt: Tilt::held_level()` in `opts` for a ring held level by its shaft
+/// (the usual axial/radial bearing model).
 pub fn stiffness_curve(
     model: &BearingModel,
     speeds_rpm: &[f64],
