@@ -60,7 +60,7 @@ impl From<&BearingState> for StiffnessPoint {
 }
 
 /// Stiffness versus speed under an axial and a radial load (seed A Fig. 11).
-/// Fails with the first speed's error if any speed does not solve. With the
+/// Fails with the error of the first (lowest-index) speed that does not solve. With the
 /// default free tilt the ring tilts under the combined load; pass
 /// `tilt: Tilt::held_level()` in `opts` for a ring held level by its shaft
 /// (the usual axial/radial bearing model).
@@ -73,12 +73,15 @@ pub fn stiffness_curve(
 ) -> Result<Vec<StiffnessPoint>> {
     let load = [radial_n, 0.0, axial_n, 0.0, 0.0];
     let start = static_start_q(model, &load, opts)?;
-    speeds_rpm
+    let points: Vec<Result<StiffnessPoint>> = speeds_rpm
         .par_iter()
         .map(|&n| {
             model
                 .solve_from(&load, n, opts, start, &mut WarmStart::new())
                 .map(|s| StiffnessPoint::from(&s))
         })
-        .collect()
+        .collect();
+    // Collect sequentially so that the error reported is always the one of
+    // the lowest-index failing speed, whatever the thread count.
+    points.into_iter().collect()
 }
