@@ -1,9 +1,41 @@
 //! Ball bearings: geometry, Hertz contact, statics, high-speed quasi-statics
 //! and stiffness.
+//!
+//! * [`model`]: coordinates (ISO/TS 16281), [`BearingModel`] (a bearing
+//!   prepared for the solvers), [`RacewayOffsets`] (thermal/fit offsets).
+//! * [`statics`]: zero-speed solve and the thrust-only contact angle (A-4).
+//! * [`quasi_static`]: Jones-Harris high-speed solve and the forward map
+//!   q -> ring forces ([`BearingModel::ring_forces`]) for dynamics.
+//! * [`kinematics`]: raceway-control kinematics and the derivation of the
+//!   gyroscopic friction-couple sign.
+//! * [`stiffness`]: the seed's axial/radial stiffness (A-39..A-42); the full
+//!   5x5 matrix is part of every [`BearingState`].
+//! * [`sweep`]: parallel speed sweeps and stiffness curves.
+//!
+//! ```
+//! use thermobear::bearing::{BearingLoad, BearingModel, SolveOptions, stiffness_curve};
+//! use thermobear::Bearing;
+//!
+//! let b = Bearing::preset("6208").unwrap();
+//! // Seed A's 100 N m case with 300 N preload, at 16,000 rpm.
+//! let s = b.solve(BearingLoad::new(2680.9, 1189.9, 0.0), 16_000.0, &SolveOptions::default()).unwrap();
+//! assert!(s.balls.iter().all(|ball| ball.outer_load_n > ball.inner_load_n));
+//! let m = BearingModel::new(&b).unwrap();
+//! let curve = stiffness_curve(&m, &[6_500.0, 16_500.0], 2680.9, 1189.9, &SolveOptions::default()).unwrap();
+//! assert!(curve[1].axial_stiffness_n_per_m < curve[0].axial_stiffness_n_per_m);
+//! ```
 
 pub mod contact;
+pub mod dual;
 pub mod geometry;
+pub mod kinematics;
+pub mod model;
 pub mod presets;
+pub mod quasi_static;
+pub mod state;
+pub mod statics;
+pub mod stiffness;
+pub mod sweep;
 
 use std::f64::consts::PI;
 
@@ -11,6 +43,13 @@ use crate::error::{non_negative, Error, Result};
 use crate::materials::{reduced_modulus, Material};
 pub use contact::{HertzContact, Raceway};
 pub use geometry::{BearingGeometry, BearingType};
+pub use kinematics::{ball_kinematics, BallKinematics};
+pub use model::{inner_ring_expansion_per_omega2, BearingModel, RacewayOffsets};
+pub use quasi_static::{ring_forces, RingForces, WarmStart};
+pub use state::{BallState, BearingLoad, BearingState, GyroCoupleSign, RacewayControl, SolveOptions, Tilt};
+pub use statics::{solve_static, thrust_contact_angle};
+pub use stiffness::{contact_stiffness_n_per_m, seed_stiffness};
+pub use sweep::{speed_sweep, stiffness_curve, StiffnessPoint};
 
 /// One ball bearing: internal geometry, the materials of its parts and the
 /// shaft it sits on (needed for centrifugal expansion, A-10).

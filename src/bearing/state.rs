@@ -1,0 +1,212 @@
+//! Options and results of the ball-bearing solvers.
+
+use super::RacewayOffsets;
+use crate::effects::EffectSet;
+
+/// Which raceway controls the ball (no spin there), Jones's hypothesis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RacewayControl {
+    /// Outer-raceway control, lambda_i = 0, lambda_o = 2 (seed A, Jones).
+    #[default]
+    Outer,
+    /// Inner-raceway control, lambda_i = 2, lambda_o = 0.
+    Inner,
+}
+
+impl RacewayControl {
+    /// (lambda_i, lambda_o) of A-15.
+    pub fn lambdas(self) -> (f64, f64) {
+        match self {
+            RacewayControl::Outer => (0.0, 2.0),
+            RacewayControl::Inner => (2.0, 0.0),
+        }
+    }
+}
+
+/// Sign of the raceway friction couple that balances the gyroscopic moment
+/// in the ball equilibrium. See [`super::kinematics`] for the
+/// derivation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum GyroCoupleSign {
+    /// Derived from the ball's spin and orbit directions: the friction force
+    /// at the controlling contact times D/2 cancels the rate of change of the
+    /// ball's angular momentum (moment balance about the ball centre).
+    #[default]
+    Derived,
+    /// The opposite sign, as printed in PHYSICS.md A-15 (Harris's form
+    /// `- (Mg/D)(lambda_i cos a_i - lambda_o cos a_o)` in the axial balance).
+    Reversed,
+}
+
+impl GyroCoupleSign {
+    pub(crate) fn factor(self) -> f64 {
+        match self {
+            GyroCoupleSign::Derived => 1.0,
+            GyroCoupleSign::Reversed => -1.0,
+        }
+    }
+}
+
+/// How the ring tilt (theta_x, theta_y) is treated.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Tilt {
+    /// The tilts are unknowns balanced by the applied moments Mx, My (full
+    /// 5-DOF equilibrium; a ring under combined load without moment tilts).
+    #[default]
+    Free,
+    /// The tilts are held at the given values (a ring held by a stiff shaft
+    /// and housing, the usual 3-DOF bearing model); the applied moments are
+    /// ignored and the state reports the moments needed to hold the tilt.
+    Fixed { theta_x_rad: f64, theta_y_rad: f64 },
+}
+
+impl Tilt {
+    /// No tilt, held (seed A's axial/radial model).
+    pub fn held_level() -> Self {
+        Tilt::Fixed {
+            theta_x_rad: 0.0,
+            theta_y_rad: 0.0,
+        }
+    }
+}
+
+/// Options of the static and quasi-static solvers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolveOptions {
+    /// Effects in the high-speed model (centrifugal_force, gyroscopic_moment,
+    /// ring_centrifugal_expansion). Default: all on.
+    pub effects: EffectSet,
+    /// Raceway control hypothesis. Default: outer.
+    pub control: RacewayControl,
+    /// Sign of the gyroscopic friction couple. Default: derived.
+    pub gyro_couple_sign: GyroCoupleSign,
+    /// Relative tolerance on the ring force balance (residual / max(|load|, 1 N)).
+    pub tolerance: f64,
+    /// Maximum Newton iterations of the ring equilibrium.
+    pub max_iterations: usize,
+    /// Thermal or fit offsets of the groove centres. Default zero.
+    pub offsets: RacewayOffsets,
+    /// Free or held ring tilt. Default: free.
+    pub tilt: Tilt,
+}
+
+impl Default for SolveOptions {
+    fn default() -> Self {
+        SolveOptions {
+            effects: EffectSet::all(),
+            control: RacewayControl::Outer,
+            gyro_couple_sign: GyroCoupleSign::Derived,
+            tolerance: 1e-9,
+            max_iterations: 100,
+            offsets: RacewayOffsets::default(),
+            tilt: Tilt::Free,
+        }
+    }
+}
+
+/// External load on the inner ring in the usual three numbers.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BearingLoad {
+    /// Axial load Fz [N] (positive loads the balls at positive contact angle).
+    pub axial_n: f64,
+    /// Radial load Fx [N].
+    pub radial_n: f64,
+    /// Tilting moment M_y about the y axis (in the plane of the radial load) [N m].
+    pub moment_n_m: f64,
+}
+
+impl BearingLoad {
+    pub fn new(axial_n: f64, radial_n: f64, moment_n_m: f64) -> Self {
+        BearingLoad {
+            axial_n,
+            radial_n,
+            moment_n_m,
+        }
+    }
+
+    /// As [Fx, Fy, Fz, Mx, My] (N, N m).
+    pub fn to_vector(self) -> [f64; 5] {
+        [self.radial_n, 0.0, self.axial_n, 0.0, self.moment_n_m]
+    }
+}
+
+/// State of one ball at the solved equilibrium.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BallState {
+    /// Azimuth psi_j from the x axis [rad].
+    pub azimuth_rad: f64,
+    /// Normal load on the inner raceway Q_i [N].
+    pub inner_load_n: f64,
+    /// Normal load on the outer raceway Q_o [N].
+    pub outer_load_n: f64,
+    /// Inner contact angle alpha_i [rad].
+    pub inner_contact_angle_rad: f64,
+    /// Outer contact angle alpha_o [rad].
+    pub outer_contact_angle_rad: f64,
+    /// Hertz approach at the inner contact delta_i [m] (negative: gap).
+    pub inner_deflection_m: f64,
+    /// Hertz approach at the outer contact delta_o [m] (negative: gap).
+    pub outer_deflection_m: f64,
+    /// Ball centrifugal force Fc [N].
+    pub centrifugal_force_n: f64,
+    /// Gyroscopic moment Mg [N m].
+    pub gyroscopic_moment_n_m: f64,
+    /// Orbit (cage) speed omega_c [rad/s].
+    pub orbit_speed_rad_s: f64,
+    /// Ball speed about its own axis relative to the cage omega_b [rad/s].
+    pub spin_speed_rad_s: f64,
+    /// Attitude angle beta of the ball axis [rad].
+    pub attitude_angle_rad: f64,
+    /// Spin of the ball relative to the inner raceway about the contact normal [rad/s].
+    pub inner_spin_rad_s: f64,
+    /// Spin of the ball relative to the outer raceway about the contact normal [rad/s].
+    pub outer_spin_rad_s: f64,
+    /// Spin-to-roll ratio at the inner contact [-].
+    pub inner_spin_to_roll: f64,
+    /// Spin-to-roll ratio at the outer contact [-].
+    pub outer_spin_to_roll: f64,
+    /// Semi-major axis of the inner contact ellipse a_i [m].
+    pub inner_semi_major_m: f64,
+    /// Semi-major axis of the outer contact ellipse a_o [m].
+    pub outer_semi_major_m: f64,
+}
+
+/// A solved bearing.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BearingState {
+    /// Inner-ring displacement [dx, dy, dz, theta_x, theta_y] (m, rad), ISO
+    /// convention (see [`super::model`]).
+    pub displacement_m_rad: [f64; 5],
+    /// Applied load [Fx, Fy, Fz, Mx, My] (N, N m); with a held tilt
+    /// ([`Tilt::Fixed`]) Mx, My are the moments that hold it.
+    pub applied_load_n_nm: [f64; 5],
+    /// Per-ball states, ball j at psi_j = 2 pi j / Z.
+    pub balls: Vec<BallState>,
+    /// Tangent stiffness K = -d(reaction)/dq, rows/columns ordered as q;
+    /// units N/m, N/rad, N m/m, N m/rad by block.
+    pub stiffness_matrix_si: [[f64; 5]; 5],
+    /// Axial stiffness by the seed's formula (A-39, A-40) [N/m].
+    pub axial_stiffness_n_per_m: f64,
+    /// Radial stiffness by the seed's formula (A-41, A-42) [N/m].
+    pub radial_stiffness_n_per_m: f64,
+    /// Ring Newton iterations used.
+    pub iterations: usize,
+    /// Final relative force residual.
+    pub residual: f64,
+    /// Inner-ring speed [rpm].
+    pub speed_rpm: f64,
+}
+
+impl BearingState {
+    /// Largest inner contact load [N].
+    pub fn max_inner_load_n(&self) -> f64 {
+        self.balls.iter().map(|b| b.inner_load_n).fold(0.0, f64::max)
+    }
+
+    /// Angular extent of the loaded zone: 2 pi times the fraction of balls
+    /// whose inner contact carries load [rad].
+    pub fn loaded_zone_rad(&self) -> f64 {
+        let n = self.balls.iter().filter(|b| b.inner_load_n > 0.0).count();
+        2.0 * std::f64::consts::PI * n as f64 / self.balls.len() as f64
+    }
+}
