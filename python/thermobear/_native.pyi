@@ -103,8 +103,9 @@ class Bearing:
         radial_n: float,
         moment_nmm: float,
         speed_rpm: float,
-        effects: Optional[Sequence[str]],
-        raceway_control: str,
+        effects: Optional[Sequence[str]] = None,
+        raceway_control: str = "outer",
+        misalignment_rad: Optional[float] = 0.0,
     ) -> dict: ...
 
 def effects() -> list[tuple[str, str]]: ...
@@ -115,7 +116,8 @@ def stiffness_curve(
     axial_n: float,
     radial_n: float,
     moment_nmm: float,
-    effects: Optional[Sequence[str]],
-    raceway_control: str,
-    progress: Optional[Callable[[int, int], None]],
+    effects: Optional[Sequence[str]] = None,
+    raceway_control: str = "outer",
+    misalignment_rad: Optional[float] = 0.0,
+    progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...

@@ -263,13 +263,20 @@ class Bearing:
         *,
         effects: Optional[Sequence[str]] = None,
         raceway_control: str = "outer",
-    ) -> "BearingSolution":
+        misalignment_rad: Optional[float] = 0.0,
+    ) -> BearingSolution:
         """Solve the bearing under an axial force, a radial force (along x)
         and a tilting moment (about y) at an inner-ring speed.
 
         At ``speed_rpm=0`` this is the static (Hertz) solve; above it the
         Jones-Harris quasi-static model with the named ``effects`` (default:
-        all; see :func:`thermobear.effects`)."""
+        all; see :func:`thermobear.effects`), with outer- (default) or
+        inner-``raceway_control``.
+
+        The inner ring's tilt is held at ``misalignment_rad`` (default 0: the
+        ISO/TS 16281 practice of a ring held by shaft and housing; the moment
+        needed to hold it is a reaction). With ``misalignment_rad=None`` the
+        tilt is free and solved so that the bearing carries ``moment_nmm``."""
         raw = self._b.solve(
             float(axial_n),
             float(radial_n),
@@ -277,6 +284,7 @@ class Bearing:
             float(speed_rpm),
             _effects_arg(effects),
             raceway_control,
+            None if misalignment_rad is None else float(misalignment_rad),
         )
         return BearingSolution(raw)
 
@@ -306,6 +314,12 @@ class BearingSolution:
     @property
     def tilt_rad(self) -> float:
         return float(np.hypot(self.displacement[3], self.displacement[4]))
+
+    @property
+    def applied_load(self) -> np.ndarray:
+        """[Fx, Fy, Fz (N), Mx, My (N m)] on the inner ring (moments are the
+        reactions when the tilt is held)."""
+        return np.asarray(self.raw["applied_load"])
 
     @property
     def stiffness(self) -> np.ndarray:
@@ -353,6 +367,7 @@ def stiffness_curve(
     mode: str = "speed",
     effects: Optional[Sequence[str]] = None,
     raceway_control: str = "outer",
+    misalignment_rad: Optional[float] = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> "polars.DataFrame":  # noqa: F821
     """Bearing stiffness against speed, solved in parallel (rayon) with the
@@ -361,6 +376,7 @@ def stiffness_curve(
     ``mode="speed"``: the high-speed quasi-static model at each speed.
     ``mode="constant"``: the zero-speed (static) stiffness repeated at every
     speed (seed A Fig. 11, case 1).
+    ``progress(done, total)`` is called between chunks; Ctrl-C interrupts.
     Columns (SI): ``speed_rpm``, ``axial_stiffness_n_per_m``,
     ``radial_stiffness_n_per_m``, ``k_xx_n_per_m`` ... , displacements in mm,
     extreme contact angles in degrees and loads in N.
@@ -383,6 +399,7 @@ def stiffness_curve(
         float(moment_nmm),
         _effects_arg(effects),
         raceway_control,
+        None if misalignment_rad is None else float(misalignment_rad),
         progress,
     )
     df = pl.DataFrame({k: np.asarray(v) for k, v in cols.items()})

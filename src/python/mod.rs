@@ -6,11 +6,13 @@ use pyo3::prelude::*;
 pub mod bearing;
 pub mod errors;
 pub mod parallel;
+pub mod solve;
 
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
     bearing::register(m)?;
+    solve::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
