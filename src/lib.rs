@@ -12,6 +12,7 @@
 //! rest of the crate never touches Python.
 
 pub mod bearing;
+pub mod dynamics;
 pub mod effects;
 pub mod error;
 pub mod materials;
