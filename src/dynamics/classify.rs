@@ -12,8 +12,10 @@
 //!    (Gottwald & Melbourne 2004, Proc. R. Soc. A 460, 603-611; correlation
 //!    form of Gottwald & Melbourne 2009, SIAM J. Appl. Dyn. Syst. 8, 129-145):
 //!    K > `zero_one_threshold` -> chaotic, else quasi-periodic. It needs a few
-//!    hundred section points to be reliable; the sweeps therefore compute a
-//!    Lyapunov exponent for every non-periodic speed by default.
+//!    hundred section points to be reliable: with fewer than
+//!    [`MIN_ZERO_ONE_POINTS`] the motion is reported quasi-periodic. The sweeps
+//!    therefore compute a Lyapunov exponent for every non-periodic speed by
+//!    default.
 //!
 //! Impact regime from the extremes of the relative deflection d against the
 //! half backlash b: always in contact on one flank (`d > b` or `d < -b`
@@ -172,6 +174,10 @@ fn correlation(x: &[f64], y: &[f64]) -> f64 {
     }
 }
 
+/// Fewest section points for which the 0-1 test is used; shorter
+/// non-periodic records are reported quasi-periodic (undecided).
+pub const MIN_ZERO_ONE_POINTS: usize = 200;
+
 /// Classify by the rule in the module docs. `lyapunov_per_period` is the
 /// largest exponent times the excitation period, if known.
 pub fn classify_motion<P: AsRef<[f64]>>(
@@ -187,7 +193,9 @@ pub fn classify_motion<P: AsRef<[f64]>>(
     match lyapunov_per_period {
         Some(l) if l > cfg.lyapunov_threshold_per_period => Motion::Chaotic,
         Some(_) => Motion::QuasiPeriodic,
-        None if zero_one_test(observable) > cfg.zero_one_threshold => Motion::Chaotic,
+        None if observable.len() >= MIN_ZERO_ONE_POINTS && zero_one_test(observable) > cfg.zero_one_threshold => {
+            Motion::Chaotic
+        }
         None => Motion::QuasiPeriodic,
     }
 }

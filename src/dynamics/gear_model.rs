@@ -536,7 +536,7 @@ impl HelicalPair {
         let g = 2 * steps_per_period;
         let (km, _) = self.stiffness.on_grid(g);
         let (e, de) = self.error.on_grid(g);
-        let edot = de.iter().map(|d| d / period).collect();
+        let coef = (0..g).map(|j| [km[j], e[j], de[j] / period]).collect();
         let kb = self.bearing_stiffness();
         let cb = self.bearing_damping();
         let mut kbm = [0.0; 7];
@@ -560,9 +560,7 @@ impl HelicalPair {
             always: self.params.mesh_damping == MeshDamping::Always,
             step: period / steps_per_period as f64,
             period,
-            km,
-            e,
-            edot,
+            coef,
             stiffness: self.stiffness.clone(),
             error: self.error.clone(),
         })
@@ -583,9 +581,8 @@ pub struct HelicalPairSystem {
     always: bool,
     step: f64,
     period: f64,
-    km: Vec<f64>,
-    e: Vec<f64>,
-    edot: Vec<f64>,
+    /// `[k_m, e, de/dt]` on the half-step grid (N/m, m, m/s).
+    coef: Vec<[f64; 3]>,
     stiffness: PeriodicTable,
     error: PeriodicTable,
 }
@@ -604,8 +601,8 @@ impl HelicalPairSystem {
     /// Dynamic transmission error `delta_n - e` (m) at the start of RK4 step
     /// `n` (grid point 2n).
     pub fn relative_deflection_m(&self, n: usize, x: &[f64; 14]) -> f64 {
-        let j = (2 * n) % self.e.len();
-        self.a.iter().zip(x.iter()).map(|(a, q)| a * q).sum::<f64>() - self.e[j]
+        let j = (2 * n) % self.coef.len();
+        self.a.iter().zip(x.iter()).map(|(a, q)| a * q).sum::<f64>() - self.coef[j][1]
     }
 
     #[inline(always)]
@@ -636,11 +633,12 @@ impl GridOde<14> for HelicalPairSystem {
         self.step
     }
     fn grid_len(&self) -> usize {
-        self.km.len()
+        self.coef.len()
     }
     #[inline(always)]
     fn rhs_grid(&self, j: usize, x: &[f64; 14], dx: &mut [f64; 14]) {
-        self.accel(self.km[j], self.e[j], self.edot[j], x, dx);
+        let [km, e, edot] = self.coef[j];
+        self.accel(km, e, edot, x, dx);
     }
 }
 

@@ -18,10 +18,11 @@ use super::ode::{GridOde, OdeSystem};
 use crate::{Error, Result};
 
 /// Grid indices of the RK4 stages of step `n` (counted from the start of a
-/// period): `(t_n, t_n + h/2, t_n + h)` on the half-step grid.
+/// period): `(t_n, t_n + h/2, t_n + h)` on the half-step grid. No division in
+/// the common case `n < steps_per_period`.
 #[inline(always)]
 fn stage_indices(n: usize, grid_len: usize) -> (usize, usize, usize) {
-    let j0 = (2 * n) % grid_len;
+    let j0 = if 2 * n < grid_len { 2 * n } else { (2 * n) % grid_len };
     let j1 = if j0 + 1 == grid_len { 0 } else { j0 + 1 };
     let j2 = if j1 + 1 == grid_len { 0 } else { j1 + 1 };
     (j0, j1, j2)

@@ -1,0 +1,393 @@
+//! Physical checks of the dynamics engine (src/dynamics/).
+
+use thermobear::dynamics::classify::{detect_period, zero_one_test};
+use thermobear::dynamics::integrate::{dopri5, rk4_advance, AdaptiveTolerance};
+use thermobear::dynamics::lyapunov::{
+    largest_lyapunov_benettin, largest_lyapunov_variational, DuffingUeda, Lorenz, LyapunovConfig,
+};
+use thermobear::dynamics::ode::Gridded;
+use thermobear::dynamics::*;
+use thermobear::Error;
+
+/// Seed-A pair made linear and conservative: no backlash, constant mesh
+/// stiffness, no damping, no torque, no transmission error.
+fn conservative_pair(half_backlash_m: f64) -> HelicalPair {
+    let mut p = HelicalPairParams::seed_a();
+    p.half_backlash_m = half_backlash_m;
+    p.mesh_stiffness_n_per_m = vec![6.0e8];
+    p.transmission_error_m = vec![0.0];
+    p.mesh_damping_ratio = 0.0;
+    p.input_torque_n_m = 0.0;
+    for b in [&mut p.pinion.bearing, &mut p.gear.bearing] {
+        b.cx_n_s_per_m = 0.0;
+        b.cy_n_s_per_m = 0.0;
+        b.cz_n_s_per_m = 0.0;
+    }
+    HelicalPair::new(p).unwrap()
+}
+
+#[test]
+fn linear_free_vibration_follows_the_eigenmodes_of_m_inv_k() {
+    // With b = 0 and constant k_m the model is M q'' + K q = 0; starting on a
+    // mode shape phi_k (eigenvector of M^-1 K from nalgebra's symmetric eigen
+    // solver) the exact motion is phi_k cos(omega_k t).
+    let pair = conservative_pair(0.0);
+    let (w, modes) = pair.natural_modes(6.0e8);
+    let sys = pair.system(10_000.0, 64).unwrap();
+    let h = 60.0 / (29.0 * 10_000.0) / 64.0;
+    for k in 0..7 {
+        let mut x = [0.0; 14];
+        let amp = 1e-6 / modes.column(k).amax();
+        for i in 0..7 {
+            x[i] = amp * modes[(i, k)];
+        }
+        // About 1.5 periods of mode k.
+        let steps = ((1.5 * 2.0 * std::f64::consts::PI / w[k]) / h).round() as usize;
+        rk4_advance(&sys, &mut x, 0, steps);
+        let c = (w[k] * h * steps as f64).cos();
+        let s = (w[k] * h * steps as f64).sin();
+        for i in 0..7 {
+            let q = amp * modes[(i, k)];
+            assert!(
+                (x[i] - q * c).abs() < 2e-4 * 1e-6,
+                "mode {k} dof {i}: {} vs {}",
+                x[i],
+                q * c
+            );
+            assert!((x[7 + i] + q * w[k] * s).abs() < 2e-4 * 1e-6 * w[k], "mode {k} vel {i}");
+        }
+    }
+    // Lowest mode of the seed pair lies in the audible range, highest above the mesh frequency.
+    assert!(w[0] > 0.0 && w[6] / (2.0 * std::f64::consts::PI) > 8000.0);
+}
+
+#[test]
+fn energy_is_conserved_without_damping_and_forcing() {
+    let start = |pair: &HelicalPair| {
+        let mut x = [0.0; 14];
+        for i in 0..7 {
+            x[7 + i] = 0.02 * ((i as f64) * 1.3).sin() + 0.01;
+        }
+        let _ = pair;
+        x
+    };
+    // Smooth case (b = 0): RK4 energy drift is O(h^4) per unit time.
+    let pair = conservative_pair(0.0);
+    // RK4 damps a mode by (omega h)^6 / 144 per step; 256 steps per mesh
+    // period at 10,000 rpm give omega h = 0.05 for the 10.3 kHz mode, a drift
+    // of ~3e-6 over 20,000 steps (64 steps would give 0.5 %).
+    let sys = pair.system(10_000.0, 256).unwrap();
+    let mut x = start(&pair);
+    let e0 = pair.mechanical_energy_j(&x);
+    rk4_advance(&sys, &mut x, 0, 20_000);
+    let e1 = pair.mechanical_energy_j(&x);
+    assert!(((e1 - e0) / e0).abs() < 1e-5, "smooth drift {}", (e1 - e0) / e0);
+    // With backlash (impacts, C1 potential) the energy still balances, to the
+    // lower accuracy of RK4 across the switches.
+    let pair = conservative_pair(20e-6);
+    let sys = pair.system(10_000.0, 256).unwrap();
+    let mut x = start(&pair);
+    let e0 = pair.mechanical_energy_j(&x);
+    let mut separations = 0;
+    let a = pair.projection();
+    let mut was_in = false;
+    for _ in 0..20_000 {
+        rk4_advance(&sys, &mut x, 0, 1);
+        let d: f64 = (0..7).map(|i| a[i] * x[i]).sum();
+        let now_in = d.abs() > 20e-6;
+        if was_in && !now_in {
+            separations += 1;
+        }
+        was_in = now_in;
+    }
+    let e1 = pair.mechanical_energy_j(&x);
+    assert!(separations > 10, "the test must exercise impacts: {separations}");
+    // Measured 1.4e-4 (the kinks of the dead zone cost RK4 its high order).
+    assert!(((e1 - e0) / e0).abs() < 5e-4, "backlash drift {}", (e1 - e0) / e0);
+}
+
+/// Light torque and large TE: the teeth separate (impacting regime).
+fn impacting_pair(damping: MeshDamping) -> HelicalPair {
+    let mut p = HelicalPairParams::seed_a();
+    p.input_torque_n_m = 10.0;
+    p.mesh_damping = damping;
+    for e in &mut p.transmission_error_m {
+        *e *= 5.0;
+    }
+    HelicalPair::new(p).unwrap()
+}
+
+fn rk4_vs_adaptive(damping: MeshDamping, periods: usize) -> Vec<f64> {
+    let pair = impacting_pair(damping);
+    let speed = 9000.0;
+    let x0 = pair.static_state().unwrap();
+    let sys = pair.system(speed, 64).unwrap();
+    let t_end = periods as f64 * sys.period_s();
+    let mut atol = [1e-12; 14];
+    for a in atol.iter_mut().skip(7) {
+        *a = 1e-9;
+    }
+    let tol = AdaptiveTolerance {
+        rtol: 1e-11,
+        atol,
+        max_steps: 2_000_000,
+    };
+    let mut xr = x0;
+    dopri5(&sys, 0.0, t_end, &mut xr, &tol).unwrap();
+    let dref = sys.relative_deflection_m(0, &xr);
+    [64, 128, 256, 512, 1024]
+        .iter()
+        .map(|&n| {
+            let s = pair.system(speed, n).unwrap();
+            let mut x = x0;
+            rk4_advance(&s, &mut x, 0, n * periods);
+            (s.relative_deflection_m(0, &x) - dref).abs()
+        })
+        .collect()
+}
+
+#[test]
+fn rk4_converges_to_the_adaptive_solution_through_impacts() {
+    // Reference: DOPRI5 at rtol 1e-11. RK4 with 64..1024 steps per mesh period.
+    // Always-on damping: the mesh force is continuous, its slope jumps at
+    // contact changes; the observed global order drops from 4 to about 2
+    // (measured 2.3 over 64 -> 1024 steps).
+    let e = rk4_vs_adaptive(MeshDamping::Always, 10);
+    let order = (e[0] / e[4]).log2() / 4.0;
+    assert!(order > 1.8, "observed order {order} ({e:?})");
+    assert!(e[4] < 1e-4 * 50e-6, "{e:?}");
+    // Contact-only damping (A-46 as printed): the force itself jumps at
+    // contact; near-grazing impacts amplify the local O(h) errors, so the
+    // convergence is irregular (measured: 1.2e-6 m at 64 steps, 3.8e-8 m at
+    // 1024). Check agreement to 0.1 % of b and an overall decrease.
+    let e = rk4_vs_adaptive(MeshDamping::InContact, 3);
+    assert!(e[4] < 1e-3 * 50e-6 && e[4] < 0.1 * e[0], "{e:?}");
+}
+
+#[test]
+fn lorenz_largest_exponent_matches_published_value() {
+    // lambda_1 = 0.9056 for sigma = 10, rho = 28, beta = 8/3 (Sprott, Chaos and
+    // Time-Series Analysis, OUP 2003, Appendix A; Wolf et al. 1985, Physica D
+    // 16, 285, give 0.90). A finite-time estimate over t = 2000 fluctuates by
+    // about 1 %; tolerance 0.03 (3 %).
+    let sys = Lorenz::classic();
+    let cfg = LyapunovConfig {
+        transient_steps: 2_000,
+        measure_steps: 200_000,
+        renorm_steps: 10,
+        separation: 1e-8,
+    };
+    let g = Gridded::new(sys, 0.01, 1);
+    let (l, _) = largest_lyapunov_benettin(&g, &[1.0, 1.0, 20.0], 0, &[1.0; 3], &cfg).unwrap();
+    println!("lorenz benettin {l}");
+    assert!((l - 0.9056).abs() < 0.03, "benettin {l}");
+    let lv = largest_lyapunov_variational(&sys, &[1.0, 1.0, 20.0], 0.0, 0.01, &cfg).unwrap();
+    println!("lorenz variational {lv}");
+    assert!((lv - 0.9056).abs() < 0.03, "variational {lv}");
+}
+
+#[test]
+fn duffing_ueda_largest_exponent_matches_published_value() {
+    // x'' + 0.05 x' + x^3 = 7.5 cos t: lambda_1 ~ 0.100 per unit time
+    // (spectrum 0.0999, 0, -0.1499 with sum -k, RK4 h = 0.001, listed at
+    // sites.google.com/view/lyapunov-spectrum, citing Ueda 1979 and Sprott,
+    // Chaos and Time-Series Analysis, pp. 182-183, 429). The exponent of this
+    // slowly mixing attractor converges slowly; t = 2e4 gives a few percent;
+    // tolerance 0.012 (12 %).
+    let sys = DuffingUeda::chaotic();
+    let period = 2.0 * std::f64::consts::PI;
+    let spp = 120;
+    let g = Gridded::new(sys, period, spp);
+    let cfg = LyapunovConfig {
+        transient_steps: 100 * spp,
+        measure_steps: 3200 * spp,
+        renorm_steps: spp / 4,
+        separation: 1e-8,
+    };
+    let (l, _) = largest_lyapunov_benettin(&g, &[3.0, 0.0], 0, &[1.0; 2], &cfg).unwrap();
+    println!("duffing benettin {l}");
+    assert!((l - 0.0999).abs() < 0.012, "benettin {l}");
+    let lv = largest_lyapunov_variational(&sys, &[3.0, 0.0], 0.0, period / spp as f64, &cfg).unwrap();
+    println!("duffing variational {lv}");
+    assert!((lv - 0.0999).abs() < 0.012, "variational {lv}");
+}
+
+#[test]
+fn period_detection_on_constructed_sequences() {
+    let n = 400;
+    let scale = [1.0, 1.0];
+    let make = |f: &dyn Fn(usize) -> [f64; 2]| (0..n).map(f).collect::<Vec<[f64; 2]>>();
+    let p1 = make(&|_| [0.3, -0.2]);
+    let p2 = make(&|k| if k % 2 == 0 { [0.3, 0.1] } else { [-0.4, 0.2] });
+    let p4 = make(&|k| [[0.1, 0.5, -0.3, 0.9][k % 4], [1.0, 0.0, 1.0, 0.5][k % 4]]);
+    assert_eq!(detect_period(&p1, &scale, 1e-3, 16), Some(1));
+    assert_eq!(detect_period(&p2, &scale, 1e-3, 16), Some(2));
+    assert_eq!(detect_period(&p4, &scale, 1e-3, 16), Some(4));
+    // Period 12 with small noise below the tolerance.
+    let p12 = make(&|k| [((k % 12) as f64).sin() + 1e-6 * (k as f64).cos(), 0.0]);
+    assert_eq!(detect_period(&p12, &scale, 1e-3, 16), Some(12));
+    // Quasi-periodic: two incommensurate frequencies (rotation number = golden mean).
+    let rho = 0.5 * (5f64.sqrt() - 1.0);
+    let tau = 2.0 * std::f64::consts::PI;
+    let qp = make(&|k| {
+        let a = tau * rho * k as f64;
+        [a.cos() + 0.3 * (2.0 * a).sin(), a.sin()]
+    });
+    assert_eq!(detect_period(&qp, &scale, 1e-3, 16), None);
+    let qp_obs: Vec<f64> = (0..2000)
+        .map(|k| (tau * rho * k as f64).cos() + 0.3 * (2.0 * tau * rho * k as f64).sin())
+        .collect();
+    let kq = zero_one_test(&qp_obs);
+    // Logistic map x -> 4 x (1 - x): fully chaotic (lambda = ln 2).
+    let mut x = 0.3;
+    let chaos: Vec<f64> = (0..2000)
+        .map(|_| {
+            x = 4.0 * x * (1.0 - x);
+            x
+        })
+        .collect();
+    let chaos_pts: Vec<[f64; 2]> = chaos.iter().map(|&v| [v, 0.0]).collect();
+    assert_eq!(detect_period(&chaos_pts, &scale, 1e-3, 16), None);
+    let kc = zero_one_test(&chaos);
+    println!("0-1 test: quasi-periodic K = {kq}, logistic K = {kc}");
+    assert!(kq < 0.2, "quasi-periodic K = {kq}");
+    assert!(kc > 0.8, "chaotic K = {kc}");
+    let cfg = ClassifyConfig::default();
+    use thermobear::dynamics::classify::classify_motion;
+    assert_eq!(classify_motion(&qp, &scale, &qp_obs, None, &cfg), Motion::QuasiPeriodic);
+    assert_eq!(classify_motion(&chaos_pts, &scale, &chaos, None, &cfg), Motion::Chaotic);
+    assert_eq!(
+        classify_motion(&chaos_pts, &scale, &chaos, Some(0.69), &cfg),
+        Motion::Chaotic
+    );
+    assert_eq!(classify_motion(&p2, &scale, &[], Some(0.69), &cfg), Motion::Periodic(2));
+}
+
+fn hysteresis_sweeps() -> (SweepResult, SweepResult) {
+    // Kahraman & Singh (1990) type softening backlash oscillator near primary
+    // resonance: zeta = 0.05, F_m = 0.1, F_a = 0.1.
+    let osc = BacklashOscillator::new(0.05, 0.1, 0.1, 0.0).unwrap();
+    let speeds: Vec<f64> = (0..31).map(|i| 0.5 + 0.025 * i as f64).collect();
+    let cfg = SweepConfig {
+        transient_periods: 150,
+        recorded_periods: 30,
+        steps_per_period: 64,
+        lyapunov_periods: 0,
+        ..SweepConfig::default()
+    };
+    let up = sweep(&osc, &speeds, SweepDirection::Up, &cfg, &|_, _| true).unwrap();
+    let down = sweep(&osc, &speeds, SweepDirection::Down, &cfg, &|_, _| true).unwrap();
+    (up, down)
+}
+
+#[test]
+fn backlash_oscillator_shows_hysteresis_and_jumps() {
+    let (up, down) = hysteresis_sweeps();
+    for (u, d) in up.points.iter().zip(&down.points) {
+        println!(
+            "{:.3} up {:.3} {:?} {:?} | down {:.3} {:?} {:?}",
+            u.speed,
+            u.amplitude(),
+            u.motion,
+            u.impact,
+            d.amplitude(),
+            d.motion,
+            d.impact
+        );
+    }
+    println!("jumps up {:?} down {:?}", up.jumps, down.jumps);
+    // Far from resonance both branches coincide (unique linear response).
+    let (u0, d0) = (&up.points[0], &down.points[0]);
+    assert!((u0.amplitude() - d0.amplitude()).abs() < 1e-6 * u0.amplitude().max(1e-9) + 1e-9);
+    // Somewhere the two branches differ by a lot: coexisting solutions.
+    let max_gap = up
+        .points
+        .iter()
+        .zip(&down.points)
+        .map(|(u, d)| (u.amplitude() - d.amplitude()).abs() / u.amplitude().max(d.amplitude()))
+        .fold(0.0, f64::max);
+    assert!(max_gap > 0.3, "largest branch difference {max_gap}");
+    // Both sweeps jump, and at different frequencies (softening: the upward
+    // sweep stays on the large branch longer).
+    assert!(!up.jumps.is_empty() && !down.jumps.is_empty());
+    assert_ne!(up.jumps, down.jumps);
+    assert!(up.jumps[0] > down.jumps[0], "up {:?} down {:?}", up.jumps, down.jumps);
+}
+
+#[test]
+fn sweeps_are_deterministic_across_thread_counts_and_cancellable() {
+    let pair = impacting_pair(MeshDamping::InContact);
+    let constant = HelicalSweep {
+        pair: pair.clone(),
+        bearings: BearingSchedule::constant(2.0e8, 5.0e7).unwrap(),
+    };
+    let varying = HelicalSweep {
+        pair,
+        bearings: BearingSchedule::new(vec![(6000.0, 2.2e8, 4.0e7), (17000.0, 1.8e8, 6.0e7)]).unwrap(),
+    };
+    let speeds: Vec<f64> = (0..6).map(|i| 7000.0 + 1500.0 * i as f64).collect();
+    let cfg = SweepConfig {
+        transient_periods: 20,
+        recorded_periods: 10,
+        steps_per_period: 48,
+        lyapunov_periods: 5,
+        ..SweepConfig::default()
+    };
+    let jobs = [
+        (&constant, SweepDirection::Up),
+        (&constant, SweepDirection::Down),
+        (&varying, SweepDirection::Independent),
+    ];
+    let run = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| sweep_many(&jobs, &speeds, &cfg, &|_, _| true).unwrap())
+    };
+    let (a, b) = (run(1), run(2));
+    assert_eq!(a, b);
+    // Independent sweep equals a single-speed run from the static state.
+    let (p, _) = thermobear::dynamics::bifurcation::run_speed(
+        &varying,
+        speeds[2],
+        &varying.initial_state(speeds[2]).unwrap(),
+        &cfg,
+    )
+    .unwrap();
+    assert_eq!(a[2].points[2], p);
+    // Cancellation after the first progress report.
+    let e = sweep(&constant, &speeds, SweepDirection::Up, &cfg, &|done, _| done < 1).unwrap_err();
+    assert_eq!(e, Error::Interrupted);
+}
+
+#[test]
+fn heavy_torque_keeps_teeth_in_contact_light_torque_impacts() {
+    // Seed A's 100 N m: static mesh deflection F / k_m ~ 8 um exceeds the
+    // dynamic swing, so the teeth never separate and the motion is period-1.
+    let base = HelicalSweep {
+        pair: HelicalPair::new(HelicalPairParams::seed_a()).unwrap(),
+        bearings: BearingSchedule::constant(2.0e8, 5.0e7).unwrap(),
+    };
+    let cfg = SweepConfig {
+        transient_periods: 300,
+        recorded_periods: 20,
+        steps_per_period: 48,
+        lyapunov_periods: 0,
+        ..SweepConfig::default()
+    };
+    let cells = regime_map(&base, &[100.0, 10.0], &[1.0, 5.0], &[8000.0, 12000.0], &cfg, &|_, _| {
+        true
+    })
+    .unwrap();
+    assert_eq!(cells.len(), 8);
+    for c in &cells {
+        if c.input_torque_n_m == 100.0 && c.error_scale == 1.0 {
+            assert_eq!(c.impact, ImpactRegime::NoImpact, "{c:?}");
+            assert_eq!(c.motion, Motion::Periodic(1), "{c:?}");
+        }
+    }
+    assert!(cells
+        .iter()
+        .any(|c| c.input_torque_n_m == 10.0 && c.error_scale == 5.0 && c.impact != ImpactRegime::NoImpact));
+}
