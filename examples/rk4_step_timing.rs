@@ -6,6 +6,7 @@
 //! Usage: cargo run --release --example rk4_step_timing [steps]
 
 use std::time::Instant;
+use thermobear::dynamics::batch::{pack, HelicalBatch, LANES};
 use thermobear::dynamics::integrate::rk4_advance;
 use thermobear::dynamics::{HelicalPair, HelicalPairParams};
 
@@ -35,6 +36,25 @@ fn main() -> thermobear::Result<()> {
     } else {
         println!("ns_per_step {:.3}", dt * 1e9 / steps as f64);
     }
+    // Lock-step lanes: LANES speeds at once; time per lane-step.
+    let speeds: [f64; LANES] = std::array::from_fn(|l| 8000.0 + 1000.0 * l as f64);
+    let systems = speeds.map(|s| pair.system(s, 64));
+    let systems: Vec<_> = systems.into_iter().collect::<thermobear::Result<_>>()?;
+    let batch = HelicalBatch::<LANES>::new(std::array::from_fn(|l| &systems[l]))?;
+    let x0 = pair.static_state()?;
+    let mut xb = pack(&[x0; LANES]);
+    let batch_steps = steps / LANES;
+    let c0 = thread_cpu_s();
+    let t0 = Instant::now();
+    for k in 0..batch_steps {
+        batch.step(k % 64, &mut xb);
+    }
+    let dt = t0.elapsed().as_secs_f64();
+    let cpu = thread_cpu_s().zip(c0).map(|(a, b)| a - b).unwrap_or(dt);
+    eprintln!("final lane-0 x_p {:.6e}", xb[0][0]);
+    let lane_steps = (batch_steps * LANES) as f64;
+    println!("batch_ns_per_lane_step {:.3}", cpu * 1e9 / lane_steps);
+    eprintln!("batch_wall_ns_per_lane_step {:.3}", dt * 1e9 / lane_steps);
     Ok(())
 }
 

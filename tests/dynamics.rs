@@ -347,6 +347,9 @@ fn sweeps_are_deterministic_across_thread_counts_and_cancellable() {
     };
     let (a, b) = (run(1), run(2));
     assert_eq!(a, b);
+    // Lock-step (batched) continuation equals the scalar continuation sweep.
+    let scalar_up = sweep(&constant, &speeds, SweepDirection::Up, &cfg, &|_, _| true).unwrap();
+    assert_eq!(a[0], scalar_up);
     // Independent sweep equals a single-speed run from the static state.
     let (p, _) = thermobear::dynamics::bifurcation::run_speed(
         &varying,

@@ -16,11 +16,12 @@
 //! [`CHUNK`] speeds otherwise); returning `false` stops the work with
 //! `Error::Interrupted`.
 
+use super::batch::{poincare_sample_batch, HelicalBatch, LANES};
 use super::classify::{classify_motion, detect_jumps, impact_regime, ClassifyConfig, ImpactRegime, Motion};
 use super::gear_model::{BacklashOscillator, BacklashOscillatorSystem, HelicalPair, HelicalPairSystem};
 use super::lyapunov::{largest_lyapunov_benettin, LyapunovConfig};
 use super::ode::GridOde;
-use super::poincare::poincare_sample;
+use super::poincare::{poincare_sample, PoincareRecord};
 use crate::error::positive;
 use crate::{Error, Result};
 use rayon::prelude::*;
@@ -45,6 +46,27 @@ pub trait SweepModel<const N: usize>: Sync {
     fn half_backlash(&self) -> f64;
     /// Static (start) state at `speed`.
     fn initial_state(&self, speed: f64) -> Result<[f64; N]>;
+
+    /// Poincare records of several `(model, speed, start)` runs with the
+    /// deflection as observable. The default runs them one by one; models
+    /// with a lock-step batch integrator override it (results must equal the
+    /// one-by-one runs exactly).
+    fn poincare_many(
+        models: &[&Self],
+        speeds: &[f64],
+        starts: &[[f64; N]],
+        cfg: &SweepConfig,
+    ) -> Result<Vec<PoincareRecord<N>>>
+    where
+        Self: Sized,
+    {
+        models
+            .iter()
+            .zip(speeds)
+            .zip(starts)
+            .map(|((m, &s), x0)| record_speed(*m, s, x0, cfg))
+            .collect()
+    }
 }
 
 /// Sweep direction.
@@ -158,20 +180,35 @@ fn check_speeds(speeds: &[f64]) -> Result<()> {
     Ok(())
 }
 
-/// Simulate one speed from `x0`; returns the point and the final state.
-pub fn run_speed<const N: usize, M: SweepModel<N>>(
+/// Poincare record of one speed from `x0` (scalar RK4).
+pub fn record_speed<const N: usize, M: SweepModel<N>>(
     model: &M,
     speed: f64,
     x0: &[f64; N],
     cfg: &SweepConfig,
-) -> Result<(SpeedPoint, [f64; N])> {
+) -> Result<PoincareRecord<N>> {
     let sys = model.system_at(speed, cfg.steps_per_period)?;
-    let rec = poincare_sample(&sys, x0, cfg.transient_periods, cfg.recorded_periods, |n, x| {
+    poincare_sample(&sys, x0, cfg.transient_periods, cfg.recorded_periods, |n, x| {
         model.deflection(&sys, n, x)
-    })?;
-    let period = cfg.classify.max_period;
-    let periodic = super::classify::detect_period(&rec.points, &rec.state_range, cfg.classify.rel_tol, period);
+    })
+}
+
+/// Classify a recorded speed (computing a Lyapunov exponent from the final
+/// state if the section is not periodic and `cfg.lyapunov_periods > 0`).
+pub fn finish_point<const N: usize, M: SweepModel<N>>(
+    model: &M,
+    speed: f64,
+    rec: PoincareRecord<N>,
+    cfg: &SweepConfig,
+) -> Result<SpeedPoint> {
+    let periodic = super::classify::detect_period(
+        &rec.points,
+        &rec.state_range,
+        cfg.classify.rel_tol,
+        cfg.classify.max_period,
+    );
     let lyapunov = if periodic.is_none() && cfg.lyapunov_periods > 0 {
+        let sys = model.system_at(speed, cfg.steps_per_period)?;
         let scale = rec.state_range.map(|s| if s > 0.0 { s } else { 1.0 });
         let lcfg = LyapunovConfig {
             transient_steps: 0,
@@ -188,7 +225,7 @@ pub fn run_speed<const N: usize, M: SweepModel<N>>(
         Some(n) => Motion::Periodic(n),
         None => classify_motion(&rec.points, &rec.state_range, &rec.observable, lyapunov, &cfg.classify),
     };
-    let point = SpeedPoint {
+    Ok(SpeedPoint {
         speed,
         impact: impact_regime(rec.observable_min, rec.observable_max, model.half_backlash()),
         poincare_deflection: rec.observable,
@@ -196,8 +233,19 @@ pub fn run_speed<const N: usize, M: SweepModel<N>>(
         deflection_max: rec.observable_max,
         motion,
         lyapunov_per_period: lyapunov,
-    };
-    Ok((point, rec.final_state))
+    })
+}
+
+/// Simulate one speed from `x0`; returns the point and the final state.
+pub fn run_speed<const N: usize, M: SweepModel<N>>(
+    model: &M,
+    speed: f64,
+    x0: &[f64; N],
+    cfg: &SweepConfig,
+) -> Result<(SpeedPoint, [f64; N])> {
+    let rec = record_speed(model, speed, x0, cfg)?;
+    let xf = rec.final_state;
+    Ok((finish_point(model, speed, rec, cfg)?, xf))
 }
 
 fn finish(direction: SweepDirection, points: Vec<SpeedPoint>, cfg: &SweepConfig) -> SweepResult {
@@ -243,11 +291,19 @@ fn sweep_counted<const N: usize, M: SweepModel<N>>(
         SweepDirection::Independent => {
             let mut out = Vec::with_capacity(speeds.len());
             for chunk in speeds.chunks(CHUNK) {
-                let part: Result<Vec<SpeedPoint>> = chunk
-                    .par_iter()
-                    .map(|&s| run_speed(model, s, &model.initial_state(s)?, cfg).map(|(p, _)| p))
+                let part: Result<Vec<Vec<SpeedPoint>>> = chunk
+                    .par_chunks(LANES)
+                    .map(|sp| {
+                        let starts = sp.iter().map(|&s| model.initial_state(s)).collect::<Result<Vec<_>>>()?;
+                        let models = vec![model; sp.len()];
+                        let recs = M::poincare_many(&models, sp, &starts, cfg)?;
+                        sp.iter()
+                            .zip(recs)
+                            .map(|(&s, r)| finish_point(model, s, r, cfg))
+                            .collect()
+                    })
                     .collect();
-                out.extend(part?);
+                out.extend(part?.into_iter().flatten());
                 counter.tick(chunk.len())?;
             }
             out
@@ -272,6 +328,37 @@ fn sweep_counted<const N: usize, M: SweepModel<N>>(
     Ok(finish(direction, points, cfg))
 }
 
+/// Continuation sweeps of several jobs in lock-step (one batch per speed step).
+fn continuation_group<const N: usize, M: SweepModel<N>>(
+    jobs: &[(&M, SweepDirection)],
+    speeds: &[f64],
+    cfg: &SweepConfig,
+    counter: &Counter,
+) -> Result<Vec<SweepResult>> {
+    let ns = speeds.len();
+    let index = |d: SweepDirection, i: usize| if d == SweepDirection::Down { ns - 1 - i } else { i };
+    let models: Vec<&M> = jobs.iter().map(|(m, _)| *m).collect();
+    let mut xs = jobs
+        .iter()
+        .map(|(m, d)| m.initial_state(speeds[index(*d, 0)]))
+        .collect::<Result<Vec<_>>>()?;
+    let mut slots: Vec<Vec<Option<SpeedPoint>>> = vec![vec![None; ns]; jobs.len()];
+    for i in 0..ns {
+        let sp: Vec<f64> = jobs.iter().map(|(_, d)| speeds[index(*d, i)]).collect();
+        let recs = M::poincare_many(&models, &sp, &xs, cfg)?;
+        for (j, rec) in recs.into_iter().enumerate() {
+            xs[j] = rec.final_state;
+            slots[j][index(jobs[j].1, i)] = Some(finish_point(models[j], sp[j], rec, cfg)?);
+        }
+        counter.tick(jobs.len())?;
+    }
+    Ok(jobs
+        .iter()
+        .zip(slots)
+        .map(|((_, d), s)| finish(*d, s.into_iter().flatten().collect(), cfg))
+        .collect())
+}
+
 /// One sweep over ascending `speeds`.
 pub fn sweep<const N: usize, M: SweepModel<N>>(
     model: &M,
@@ -292,7 +379,10 @@ pub fn sweep<const N: usize, M: SweepModel<N>>(
 }
 
 /// Several independent sweeps `(model, direction)` over the same speeds, in
-/// parallel; results in the order of `jobs`.
+/// parallel; results in the order of `jobs`. Continuation sweeps are grouped
+/// (at most [`LANES`] per group, as many groups as rayon threads) and each
+/// group runs in lock-step; lanes are bitwise independent, so the grouping
+/// (and the thread count) does not change any result.
 pub fn sweep_many<const N: usize, M: SweepModel<N>>(
     jobs: &[(&M, SweepDirection)],
     speeds: &[f64],
@@ -307,9 +397,42 @@ pub fn sweep_many<const N: usize, M: SweepModel<N>>(
         cancelled: AtomicBool::new(false),
         progress,
     };
-    jobs.par_iter()
-        .map(|(m, d)| sweep_counted(*m, speeds, *d, cfg, &counter))
-        .collect()
+    let cont: Vec<usize> = (0..jobs.len())
+        .filter(|&j| jobs[j].1 != SweepDirection::Independent)
+        .collect();
+    let indep: Vec<usize> = (0..jobs.len())
+        .filter(|&j| jobs[j].1 == SweepDirection::Independent)
+        .collect();
+    let threads = rayon::current_num_threads().max(1);
+    let group = cont.len().div_ceil(threads).clamp(1, LANES);
+    let groups: Vec<Vec<usize>> = cont.chunks(group).map(|c| c.to_vec()).collect();
+    let (cont_res, indep_res) = rayon::join(
+        || -> Result<Vec<Vec<SweepResult>>> {
+            groups
+                .par_iter()
+                .map(|g| {
+                    let js: Vec<(&M, SweepDirection)> = g.iter().map(|&j| jobs[j]).collect();
+                    continuation_group(&js, speeds, cfg, &counter)
+                })
+                .collect()
+        },
+        || -> Result<Vec<SweepResult>> {
+            indep
+                .par_iter()
+                .map(|&j| sweep_counted(jobs[j].0, speeds, jobs[j].1, cfg, &counter))
+                .collect()
+        },
+    );
+    let mut out: Vec<Option<SweepResult>> = vec![None; jobs.len()];
+    for (g, rs) in groups.iter().zip(cont_res?) {
+        for (&j, r) in g.iter().zip(rs) {
+            out[j] = Some(r);
+        }
+    }
+    for (&j, r) in indep.iter().zip(indep_res?) {
+        out[j] = Some(r);
+    }
+    Ok(out.into_iter().flatten().collect())
 }
 
 // ------------------------------------------------------------- models ----
@@ -399,6 +522,30 @@ impl SweepModel<14> for HelicalSweep {
     fn initial_state(&self, speed: f64) -> Result<[f64; 14]> {
         self.pair_at(speed)?.static_state()
     }
+
+    /// Lock-step batches of [`LANES`] systems (short batches are padded by
+    /// repeating their first lane).
+    fn poincare_many(
+        models: &[&Self],
+        speeds: &[f64],
+        starts: &[[f64; 14]],
+        cfg: &SweepConfig,
+    ) -> Result<Vec<PoincareRecord<14>>> {
+        let systems = models
+            .iter()
+            .zip(speeds)
+            .map(|(m, &s)| m.system_at(s, cfg.steps_per_period))
+            .collect::<Result<Vec<_>>>()?;
+        let mut out = Vec::with_capacity(systems.len());
+        for (sys, x0) in systems.chunks(LANES).zip(starts.chunks(LANES)) {
+            let pick = |l: usize| if l < sys.len() { l } else { 0 };
+            let batch = HelicalBatch::<LANES>::new(std::array::from_fn(|l| &sys[pick(l)]))?;
+            let st: [[f64; 14]; LANES] = std::array::from_fn(|l| x0[pick(l)]);
+            let recs = poincare_sample_batch(&batch, &st, cfg.transient_periods, cfg.recorded_periods)?;
+            out.extend(recs.into_iter().take(sys.len()));
+        }
+        Ok(out)
+    }
 }
 
 impl SweepModel<2> for BacklashOscillator {
@@ -481,24 +628,37 @@ pub fn regime_map(
     };
     let mut out = Vec::with_capacity(cells.len());
     for chunk in cells.chunks(CHUNK) {
-        let part: Result<Vec<RegimeCell>> = chunk
-            .par_iter()
-            .map(|&(m, s)| {
-                let (t, e, model) = &models[m];
-                let speed = speeds_rpm[s];
-                let (p, _) = run_speed(model, speed, &model.initial_state(speed)?, cfg)?;
-                Ok(RegimeCell {
-                    input_torque_n_m: *t,
-                    error_scale: *e,
-                    speed_rpm: speed,
-                    motion: p.motion,
-                    impact: p.impact,
-                    amplitude_m: p.amplitude(),
-                    mean_deflection_m: 0.5 * (p.deflection_max + p.deflection_min),
-                })
+        let part: Result<Vec<Vec<RegimeCell>>> = chunk
+            .par_chunks(LANES)
+            .map(|group| {
+                let ms: Vec<&HelicalSweep> = group.iter().map(|&(m, _)| &models[m].2).collect();
+                let sp: Vec<f64> = group.iter().map(|&(_, s)| speeds_rpm[s]).collect();
+                let starts = ms
+                    .iter()
+                    .zip(&sp)
+                    .map(|(m, &s)| m.initial_state(s))
+                    .collect::<Result<Vec<_>>>()?;
+                let recs = HelicalSweep::poincare_many(&ms, &sp, &starts, cfg)?;
+                group
+                    .iter()
+                    .zip(recs)
+                    .map(|(&(m, s), rec)| {
+                        let (t, e, model) = &models[m];
+                        let p = finish_point(model, speeds_rpm[s], rec, cfg)?;
+                        Ok(RegimeCell {
+                            input_torque_n_m: *t,
+                            error_scale: *e,
+                            speed_rpm: p.speed,
+                            motion: p.motion,
+                            impact: p.impact,
+                            amplitude_m: p.amplitude(),
+                            mean_deflection_m: 0.5 * (p.deflection_max + p.deflection_min),
+                        })
+                    })
+                    .collect()
             })
             .collect();
-        out.extend(part?);
+        out.extend(part?.into_iter().flatten());
         counter.tick(chunk.len())?;
     }
     Ok(out)

@@ -1,46 +1,46 @@
 //! Gear-pair dynamic models.
 //!
 //! (a) [`BacklashOscillator`]: the classic single-DOF torsional backlash model
-//!     in non-dimensional form (Kahraman & Singh 1990, J. Sound Vib. 142(1),
-//!     49-75; time-varying stiffness as in Blankenship & Kahraman 1995,
-//!     J. Sound Vib. 185(5), 743-765):
-//!     `x'' + 2 zeta x' + k(tau) f(x) = F_m + F_a Omega^2 cos(Omega tau)`,
-//!     `k(tau) = 1 + alpha cos(Omega tau)`, `f` the dead zone with unit
-//!     half-backlash (x is measured in units of b, time in 1/omega_n).
+//! in non-dimensional form (Kahraman & Singh 1990, J. Sound Vib. 142(1),
+//! 49-75; time-varying stiffness as in Blankenship & Kahraman 1995,
+//! J. Sound Vib. 185(5), 743-765):
+//! `x'' + 2 zeta x' + k(tau) f(x) = F_m + F_a Omega^2 cos(Omega tau)`,
+//! `k(tau) = 1 + alpha cos(Omega tau)`, `f` the dead zone with unit
+//! half-backlash (x is measured in units of b, time in 1/omega_n).
 //!
 //! (b) [`HelicalPair`]: the 8-DOF helical pair of PHYSICS.md section 7
-//!     (A-43 .. A-50), integrated in SI. The rotations enter the mesh only
-//!     through `R_p theta_p - R_g theta_g` (A-45: the theta terms of delta_x and
-//!     delta_y combine to `(R_p theta_p - R_g theta_g)(sin^2 phi + cos^2 phi)
-//!     cos beta`), so, as A-49 does, the two rotations are replaced by the
-//!     relative coordinate `u = R_p theta_p - R_g theta_g` (m). The rigid-body
-//!     rotation is removed by assuming the output torque balances the input
-//!     on average, `T_g = T_p R_g / R_p`, leaving 7 DOF / 14 states:
-//!     `q = [x_p, y_p, z_p, x_g, y_g, z_g, u]`, state `x = [q, dq/dt]`.
+//! (A-43 .. A-50), integrated in SI. The rotations enter the mesh only
+//! through `R_p theta_p - R_g theta_g` (A-45: the theta terms of delta_x and
+//! delta_y combine to `(R_p theta_p - R_g theta_g)(sin^2 phi + cos^2 phi)
+//! cos beta`), so, as A-49 does, the two rotations are replaced by the
+//! relative coordinate `u = R_p theta_p - R_g theta_g` (m). The rigid-body
+//! rotation is removed by assuming the output torque balances the input
+//! on average, `T_g = T_p R_g / R_p`, leaving 7 DOF / 14 states:
+//! `q = [x_p, y_p, z_p, x_g, y_g, z_g, u]`, state `x = [q, dq/dt]`.
 //!
-//!     Mesh deflection (A-45) `delta_n = a . q` with
-//!     `a = [s c, C c, S, -s c, -C c, -S, c]`, `s = sin phi`, `C = cos phi`,
-//!     `c = cos beta`, `S = sin beta`.
-//!     Equations (A-43, A-44 reduced):
-//!     `m_i q_i'' + c_bi q_i' + k_bi q_i + a_i F_n = f_i`,
-//!     with `m_7 = m_e = 1 / (R_p^2/I_p + R_g^2/I_g)`, `k_b7 = c_b7 = 0` and
-//!     `f_7 = T_p / R_p`. Printed A-50 has `cos phi` and `R_bg^2 / I_p` in the
-//!     torsional line: both are typos (energy consistency of needs
-//!     `cos beta` and `R_bp^2 / I_p`); this code uses the consistent form.
-//!     Mesh force: `F_n = k_m(t) f(delta_n - e(t)) + c_m d/dt(delta_n - e)`,
-//!     dead zone `f(d) = d - clamp(d, -b, b)` (total backlash 2b).
-//!     A-46 as printed applies the mesh damping only in contact
-//!     ([`MeshDamping::InContact`], default); PHYSICS.md writes it always
-//!     active ([`MeshDamping::Always`]). Both are offered: contact-only damping
-//!     leaves the separated teeth undamped and makes the force jump at
-//!     contact, which widens the non-periodic regions markedly.
-//!     `c_m = 2 zeta_m sqrt(k_mean m_mesh)` with the equivalent mass along the
-//!     line of action `m_mesh = m_e / cos^2 beta` (torsional mode, rigid bearings).
+//! Mesh deflection (A-45) `delta_n = a . q` with
+//! `a = [s c, C c, S, -s c, -C c, -S, c]`, `s = sin phi`, `C = cos phi`,
+//! `c = cos beta`, `S = sin beta`.
+//! Equations (A-43, A-44 reduced):
+//! `m_i q_i'' + c_bi q_i' + k_bi q_i + a_i F_n = f_i`,
+//! with `m_7 = m_e = 1 / (R_p^2/I_p + R_g^2/I_g)`, `k_b7 = c_b7 = 0` and
+//! `f_7 = T_p / R_p`. Printed A-50 has `cos phi` and `R_bg^2 / I_p` in the
+//! torsional line: both are typos (energy consistency of needs
+//! `cos beta` and `R_bp^2 / I_p`); this code uses the consistent form.
+//! Mesh force: `F_n = k_m(t) f(delta_n - e(t)) + c_m d/dt(delta_n - e)`,
+//! dead zone `f(d) = d - clamp(d, -b, b)` (total backlash 2b).
+//! A-46 as printed applies the mesh damping only in contact
+//! ([`MeshDamping::InContact`], default); PHYSICS.md writes it always
+//! active ([`MeshDamping::Always`]). Both are offered: contact-only damping
+//! leaves the separated teeth undamped and makes the force jump at
+//! contact, which widens the non-periodic regions markedly.
+//! `c_m = 2 zeta_m sqrt(k_mean m_mesh)` with the equivalent mass along the
+//! line of action `m_mesh = m_e / cos^2 beta` (torsional mode, rigid bearings).
 //!
-//!     SI instead of A-47's non-dimensionalisation: classical RK4 is invariant
-//!     under linear rescaling of the state and time, so scaling changes
-//!     nothing but rounding; the adaptive checks use per-state absolute
-//!     tolerances scaled with the backlash and velocity scale instead.
+//! SI instead of A-47's non-dimensionalisation: classical RK4 is invariant
+//! under linear rescaling of the state and time, so scaling changes
+//! nothing but rounding; the adaptive checks use per-state absolute
+//! tolerances scaled with the backlash and velocity scale instead.
 
 use super::ode::{GridOde, OdeSystem, PeriodicTable};
 use crate::error::{finite, non_negative, positive};
@@ -571,20 +571,20 @@ impl HelicalPair {
 /// `[x_p, y_p, z_p, x_g, y_g, z_g, u, velocities]` (m, m/s).
 #[derive(Debug, Clone, PartialEq)]
 pub struct HelicalPairSystem {
-    a: [f64; 7],
-    am: [f64; 7],
-    kbm: [f64; 7],
-    cbm: [f64; 7],
-    g: [f64; 7],
-    b: f64,
-    cm: f64,
-    always: bool,
-    step: f64,
-    period: f64,
+    pub(crate) a: [f64; 7],
+    pub(crate) am: [f64; 7],
+    pub(crate) kbm: [f64; 7],
+    pub(crate) cbm: [f64; 7],
+    pub(crate) g: [f64; 7],
+    pub(crate) b: f64,
+    pub(crate) cm: f64,
+    pub(crate) always: bool,
+    pub(crate) step: f64,
+    pub(crate) period: f64,
     /// `[k_m, e, de/dt]` on the half-step grid (N/m, m, m/s).
-    coef: Vec<[f64; 3]>,
-    stiffness: PeriodicTable,
-    error: PeriodicTable,
+    pub(crate) coef: Vec<[f64; 3]>,
+    pub(crate) stiffness: PeriodicTable,
+    pub(crate) error: PeriodicTable,
 }
 
 impl HelicalPairSystem {
@@ -607,20 +607,16 @@ impl HelicalPairSystem {
 
     #[inline(always)]
     fn accel(&self, km: f64, e: f64, edot: f64, x: &[f64; 14], dx: &mut [f64; 14]) {
-        let mut d = 0.0;
-        let mut dv = 0.0;
-        for i in 0..7 {
-            d += self.a[i] * x[i];
-            dv += self.a[i] * x[7 + i];
-        }
-        let s = d - e;
-        let f = dead_zone(s, self.b);
-        let damp = if self.always || f != 0.0 {
-            self.cm * (dv - edot)
-        } else {
-            0.0
-        };
-        let fmesh = km * f + damp;
+        // Pairwise sums (shorter dependency chains than a running sum); the
+        // lock-step batch in `batch.rs` repeats this expression order exactly.
+        let a = &self.a;
+        let d =
+            ((a[0] * x[0] + a[1] * x[1]) + (a[2] * x[2] + a[3] * x[3])) + ((a[4] * x[4] + a[5] * x[5]) + a[6] * x[6]);
+        let dv = ((a[0] * x[7] + a[1] * x[8]) + (a[2] * x[9] + a[3] * x[10]))
+            + ((a[4] * x[11] + a[5] * x[12]) + a[6] * x[13]);
+        let f = dead_zone(d - e, self.b);
+        let c = if self.always || f != 0.0 { self.cm } else { 0.0 };
+        let fmesh = km * f + c * (dv - edot);
         for i in 0..7 {
             dx[i] = x[7 + i];
             dx[7 + i] = self.g[i] - self.kbm[i] * x[i] - self.cbm[i] * x[7 + i] - self.am[i] * fmesh;

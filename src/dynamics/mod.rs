@@ -4,6 +4,7 @@
 //! sections, motion classification and speed sweeps (A, section 3.3,
 //! Figs. 14-15).
 
+pub mod batch;
 pub mod bifurcation;
 pub mod classify;
 pub mod gear_model;
