@@ -6,7 +6,7 @@
 //! Usage: cargo run --release --example rk4_step_timing [steps]
 
 use std::time::Instant;
-use thermobear::dynamics::batch::{pack, HelicalBatch, LANES};
+use thermobear::dynamics::batch::{advance_batch, pack, HelicalBatch, LANES};
 use thermobear::dynamics::integrate::rk4_advance;
 use thermobear::dynamics::{HelicalPair, HelicalPairParams};
 
@@ -46,9 +46,7 @@ fn main() -> thermobear::Result<()> {
     let batch_steps = steps / LANES;
     let c0 = thread_cpu_s();
     let t0 = Instant::now();
-    for k in 0..batch_steps {
-        batch.step(k % 64, &mut xb);
-    }
+    advance_batch(&batch, &mut xb, batch_steps);
     let dt = t0.elapsed().as_secs_f64();
     let cpu = thread_cpu_s().zip(c0).map(|(a, b)| a - b).unwrap_or(dt);
     eprintln!("final lane-0 x_p {:.6e}", xb[0][0]);

@@ -27,8 +27,8 @@ pub struct HelicalBatch<const L: usize> {
     g: [[f64; L]; 7],
     b: [f64; L],
     cm: [f64; L],
-    /// 1.0 where damping acts inside the backlash too, else 0.0.
-    always: [bool; L],
+    /// Mesh damping inside the backlash: `c_m` if it always acts, else 0.
+    cm_gap: [f64; L],
     h: [f64; L],
     /// `[k_m, e, de/dt]` per grid point and lane.
     coef: Vec<[[f64; L]; 3]>,
@@ -57,7 +57,7 @@ impl<const L: usize> HelicalBatch<L> {
             g: z,
             b: [0.0; L],
             cm: [0.0; L],
-            always: [false; L],
+            cm_gap: [0.0; L],
             h: [0.0; L],
             coef: vec![[[0.0; L]; 3]; g],
         };
@@ -71,7 +71,7 @@ impl<const L: usize> HelicalBatch<L> {
             }
             out.b[l] = s.b;
             out.cm[l] = s.cm;
-            out.always[l] = s.always;
+            out.cm_gap[l] = if s.always { s.cm } else { 0.0 };
             out.h[l] = s.step();
             for j in 0..g {
                 for c in 0..3 {
@@ -98,8 +98,12 @@ impl<const L: usize> HelicalBatch<L> {
             let dv = ((a[0][l] * x[7][l] + a[1][l] * x[8][l]) + (a[2][l] * x[9][l] + a[3][l] * x[10][l]))
                 + ((a[4][l] * x[11][l] + a[5][l] * x[12][l]) + a[6][l] * x[13][l]);
             let s = d - c3[1][l];
-            let f = s - s.max(-self.b[l]).min(self.b[l]);
-            let c = if self.always[l] || f != 0.0 { self.cm[l] } else { 0.0 };
+            // f64::clamp spelled out as selects (same values, vectorisable).
+            let (lo, hi) = (-self.b[l], self.b[l]);
+            let cl = if s < lo { lo } else { s };
+            let cl = if cl > hi { hi } else { cl };
+            let f = s - cl;
+            let c = if f != 0.0 { self.cm[l] } else { self.cm_gap[l] };
             fmesh[l] = c3[0][l] * f + c * (dv - c3[2][l]);
         }
         for i in 0..7 {
@@ -182,8 +186,72 @@ pub fn lane<const L: usize>(x: &BatchState<L>, l: usize) -> [f64; 14] {
 
 /// Lock-step version of [`super::poincare::poincare_sample`] with the
 /// relative deflection as observable; one record per lane, identical to the
-/// scalar records.
+/// scalar records. On x86-64 CPUs with AVX2 (detected at run time) the same
+/// code is compiled with 256-bit vectors; no FMA contraction is used, so the
+/// results do not depend on the CPU.
 pub fn poincare_sample_batch<const L: usize>(
+    batch: &HelicalBatch<L>,
+    starts: &[[f64; 14]; L],
+    transient_periods: usize,
+    recorded_periods: usize,
+) -> Result<[PoincareRecord<14>; L]> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU supports AVX2 (checked just above), the only
+            // requirement of a `target_feature(enable = "avx2")` function.
+            return unsafe { poincare_avx2(batch, starts, transient_periods, recorded_periods) };
+        }
+    }
+    poincare_impl(batch, starts, transient_periods, recorded_periods)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn poincare_avx2<const L: usize>(
+    batch: &HelicalBatch<L>,
+    starts: &[[f64; 14]; L],
+    transient_periods: usize,
+    recorded_periods: usize,
+) -> Result<[PoincareRecord<14>; L]> {
+    poincare_impl(batch, starts, transient_periods, recorded_periods)
+}
+
+/// Advance `steps` lock-step RK4 steps from step 0 (AVX2 when available);
+/// used by the timing example.
+pub fn advance_batch<const L: usize>(batch: &HelicalBatch<L>, x: &mut BatchState<L>, steps: usize) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: AVX2 support checked just above.
+            unsafe { advance_avx2(batch, x, steps) };
+            return;
+        }
+    }
+    advance_impl(batch, x, steps);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn advance_avx2<const L: usize>(batch: &HelicalBatch<L>, x: &mut BatchState<L>, steps: usize) {
+    advance_impl(batch, x, steps);
+}
+
+#[inline(always)]
+fn advance_impl<const L: usize>(batch: &HelicalBatch<L>, x: &mut BatchState<L>, steps: usize) {
+    let per = batch.grid_len() / 2;
+    let mut n = 0;
+    for _ in 0..steps {
+        batch.step(n, x);
+        n += 1;
+        if n == per {
+            n = 0;
+        }
+    }
+}
+
+#[inline(always)]
+fn poincare_impl<const L: usize>(
     batch: &HelicalBatch<L>,
     starts: &[[f64; 14]; L],
     transient_periods: usize,
