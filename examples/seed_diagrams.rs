@@ -63,7 +63,9 @@ fn main() -> thermobear::Result<()> {
         jobs.push((m, SweepDirection::Up));
         jobs.push((m, SweepDirection::Down));
     }
-    let speeds: Vec<f64> = (0..n).map(|i| 6500.0 + 10_000.0 * i as f64 / (n - 1).max(1) as f64).collect();
+    let speeds: Vec<f64> = (0..n)
+        .map(|i| 6500.0 + 10_000.0 * i as f64 / (n - 1).max(1) as f64)
+        .collect();
     let cfg = SweepConfig::default();
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
@@ -88,7 +90,11 @@ fn main() -> thermobear::Result<()> {
     let map_speeds: Vec<f64> = (0..21).map(|i| 6500.0 + 500.0 * i as f64).collect();
     let t0 = Instant::now();
     let cells = pool.install(|| regime_map(&models[0], &torques, &[1.0, 5.0], &map_speeds, &cfg, &|_, _| true))?;
-    println!("regime map ({} cells): {:.2} s", cells.len(), t0.elapsed().as_secs_f64());
+    println!(
+        "regime map ({} cells): {:.2} s",
+        cells.len(),
+        t0.elapsed().as_secs_f64()
+    );
     println!("legend: 1 = P1 no impact, 2..9 = period-n, * = P1 impacting, q = quasi-periodic, c = chaos; upper case = double-sided");
     for chunk in cells.chunks(map_speeds.len()) {
         let row: String = chunk

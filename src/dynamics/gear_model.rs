@@ -652,6 +652,23 @@ mod tests {
     use super::*;
 
     #[test]
+    fn backlash_oscillator_validates_and_has_static_contact_solution() {
+        assert!(BacklashOscillator::new(-0.1, 0.1, 0.1, 0.0).is_err());
+        assert!(BacklashOscillator::new(0.05, 0.1, 0.1, 1.2)
+            .unwrap_err()
+            .to_string()
+            .contains("stiffness_variation"));
+        let osc = BacklashOscillator::new(0.05, 0.1, 0.0, 0.0).unwrap();
+        assert!(osc.system(0.0, 64).is_err());
+        // Unforced: the static contact x = F_m + 1 is an equilibrium.
+        let sys = osc.system(1.0, 64).unwrap();
+        let mut dx = [1.0; 2];
+        sys.rhs(0.3, &[1.1, 0.0], &mut dx);
+        assert!(dx[0].abs() < 1e-15 && dx[1].abs() < 1e-12, "{dx:?}");
+        assert!((sys.period() - 2.0 * std::f64::consts::PI).abs() < 1e-12);
+    }
+
+    #[test]
     fn dead_zone_is_continuous_and_odd() {
         let b = 2.0;
         assert_eq!(dead_zone(1.5, b), 0.0);
