@@ -598,6 +598,11 @@ impl HelicalPairSystem {
         self.b
     }
 
+    /// Static transmission error e(t) (m) from the interpolated table.
+    pub fn transmission_error_m(&self, t_s: f64) -> f64 {
+        self.error.eval(t_s / self.period).0
+    }
+
     /// Dynamic transmission error `delta_n - e` (m) at the start of RK4 step
     /// `n` (grid point 2n).
     pub fn relative_deflection_m(&self, n: usize, x: &[f64; 14]) -> f64 {

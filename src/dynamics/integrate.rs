@@ -9,10 +9,17 @@
 //!   DOP853 would be more efficient at tight tolerances; DOPRI5 was chosen for
 //!   time and is run at tolerances 1e-10..1e-12 in the checks.
 //!
+//! - [`rk4_located`]: RK4 whose steps are split at located switching events
+//!   (contact changes), for accuracy checks.
+//!
 //! Backlash makes the right-hand side continuous with a jump in its
 //! derivative (or, with contact-only mesh damping, a jump in the force itself).
 //! RK4 then loses its fourth order at the switching steps; the tests in
-//! `tests/dynamics.rs` measure the observed order and compare with DOPRI5.
+//! `tests/dynamics.rs` measure the observed order against DOPRI5 (impacting
+//! case, 10 mesh periods): plain RK4 with always-on damping 3.0e-7 m at 64
+//! steps per period, 3.9e-11 m at 1024 (irregular, about 2nd order at coarse
+//! steps); with located switches 8.9e-9 m at 64 and 1.4e-11 m at 512
+//! (order ~3); contact-only damping 1.2e-6 m at 64, 3.8e-8 m at 1024.
 
 use super::ode::{GridOde, OdeSystem};
 use crate::{Error, Result};
@@ -117,6 +124,75 @@ pub fn rk4_step<const N: usize, S: OdeSystem<N>>(sys: &S, t: f64, h: f64, x: &mu
     for i in 0..N {
         x[i] += h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
     }
+}
+
+/// Classical RK4 with located switching events: steps of nominal size `h`
+/// from `t0` to `t0 + steps h`; whenever the switching function `g(t, x)`
+/// changes sign over a step, the crossing fraction is found by the Illinois
+/// variant of regula falsi on `theta -> g(t + theta h, RK4(x, theta h))` and
+/// the step is split there, so no RK4 step straddles a kink of the
+/// right-hand side (e.g. `g = |delta_n - e| - b` for backlash contact).
+/// Returns the number of located crossings. Slower than the grid RK4 (uses
+/// [`OdeSystem::rhs`] at arbitrary times); meant for accuracy checks.
+pub fn rk4_located<const N: usize, S: OdeSystem<N>, G: Fn(f64, &[f64; N]) -> f64>(
+    sys: &S,
+    g: G,
+    t0: f64,
+    h: f64,
+    steps: usize,
+    x: &mut [f64; N],
+) -> usize {
+    let mut crossings = 0;
+    let t_end = t0 + steps as f64 * h;
+    let mut t = t0;
+    let mut g0 = g(t, x);
+    while t < t_end - 1e-12 * h {
+        let dt = h.min(t_end - t);
+        let mut y = *x;
+        rk4_step(sys, t, dt, &mut y);
+        let g1 = g(t + dt, &y);
+        if g0 != 0.0 && g0.signum() != g1.signum() {
+            // Illinois regula falsi on the step fraction.
+            let (mut a, mut fa, mut b, mut fb) = (0.0, g0, 1.0, g1);
+            let mut side = 0;
+            for _ in 0..60 {
+                let c = (a * fb - b * fa) / (fb - fa);
+                let mut z = *x;
+                rk4_step(sys, t, c * dt, &mut z);
+                let fc = g(t + c * dt, &z);
+                if fc.signum() == fa.signum() {
+                    a = c;
+                    fa = fc;
+                    if side == -1 {
+                        fb *= 0.5;
+                    }
+                    side = -1;
+                } else {
+                    b = c;
+                    fb = fc;
+                    if side == 1 {
+                        fa *= 0.5;
+                    }
+                    side = 1;
+                }
+                if (b - a) < 1e-13 || fc == 0.0 {
+                    break;
+                }
+            }
+            // Step to just past the crossing so the next step starts on the
+            // new side of the switching surface.
+            let theta = b.max(1e-12);
+            rk4_step(sys, t, theta * dt, x);
+            t += theta * dt;
+            g0 = g(t, x);
+            crossings += 1;
+        } else {
+            *x = y;
+            t += dt;
+            g0 = g1;
+        }
+    }
+    crossings
 }
 
 /// Tolerances of the adaptive integrator: a step is accepted when
