@@ -5,9 +5,8 @@
 //!   arrays, coefficients read from precomputed tables.
 //! - Adaptive Dormand-Prince 5(4) (Dormand & Prince 1980, J. Comput. Appl.
 //!   Math. 6, 19-26; step-size control as in Hairer, Norsett & Wanner,
-//!   *Solving ODEs I*, 2nd ed., section II.4) used as the accuracy reference.
-//!   DOP853 would be more efficient at tight tolerances; DOPRI5 was chosen for
-//!   time and is run at tolerances 1e-10..1e-12 in the checks.
+//!   *Solving ODEs I*, 2nd ed., section II.4); the 8th-order DOP853 is in
+//!   [`super::dop853`]. The two are cross-checked on the impacting gear case.
 //!
 //! - [`rk4_located`]: RK4 whose steps are split at located switching events
 //!   (contact changes), for accuracy checks.
@@ -349,7 +348,7 @@ pub fn dopri5<const N: usize, S: OdeSystem<N>>(
 }
 
 /// Initial step guess (Hairer, Norsett & Wanner, section II.4, simplified).
-fn initial_step<const N: usize, S: OdeSystem<N>>(
+pub(crate) fn initial_step<const N: usize, S: OdeSystem<N>>(
     sys: &S,
     t0: f64,
     x: &[f64; N],

@@ -7,6 +7,7 @@
 pub mod batch;
 pub mod bifurcation;
 pub mod classify;
+pub mod dop853;
 pub mod gear_model;
 pub mod integrate;
 pub mod lyapunov;
