@@ -35,6 +35,33 @@ fn summary(r: &SweepResult) -> String {
     )
 }
 
+fn print_map(cells: &[RegimeCell], row_len: usize) {
+    for chunk in cells.chunks(row_len) {
+        let row: String = chunk
+            .iter()
+            .map(|c| {
+                let ch = match c.motion {
+                    Motion::Periodic(1) if c.impact == ImpactRegime::NoImpact => '1',
+                    Motion::Periodic(1) => '*',
+                    Motion::Periodic(k) if k < 10 => char::from_digit(k as u32, 10).unwrap_or('n'),
+                    Motion::Periodic(_) => 'n',
+                    Motion::QuasiPeriodic => 'q',
+                    Motion::Chaotic => 'c',
+                };
+                if c.impact == ImpactRegime::DoubleSided {
+                    ch.to_ascii_uppercase()
+                } else {
+                    ch
+                }
+            })
+            .collect();
+        println!(
+            "  T = {:>5.1} N m, TE x{}: {row}",
+            chunk[0].input_torque_n_m, chunk[0].error_scale
+        );
+    }
+}
+
 fn main() -> thermobear::Result<()> {
     let args: Vec<String> = std::env::args().collect();
     let n: usize = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1001);
@@ -71,54 +98,52 @@ fn main() -> thermobear::Result<()> {
         .num_threads(threads)
         .build()
         .map_err(|e| thermobear::Error::config("threads", threads, e.to_string()))?;
+    let c0 = process_cpu_s();
     let t0 = Instant::now();
     let res = pool.install(|| sweep_many(&jobs, &speeds, &cfg, &|_, _| true))?;
     let dt = t0.elapsed().as_secs_f64();
+    let cpu = process_cpu_s().zip(c0).map(|(a, b)| a - b);
     let lane_steps = (jobs.len() * n * (cfg.transient_periods + cfg.recorded_periods) * cfg.steps_per_period) as f64;
     println!(
-        "seed set: {} speeds x {} sweeps on {threads} threads: {dt:.2} s wall ({:.1} ns per step per core)",
+        "seed set: {} speeds x {} sweeps on {threads} threads: {dt:.2} s wall, {} s CPU ({:.1} CPU-ns per step)",
         n,
         jobs.len(),
-        dt * threads as f64 * 1e9 / lane_steps
+        cpu.map_or("?".into(), |c| format!("{c:.2}")),
+        cpu.unwrap_or(f64::NAN) * 1e9 / lane_steps
     );
     for (k, r) in res.iter().enumerate() {
         println!("  {:<18} {}", cases[k / 2].0, summary(r));
     }
 
-    // Regime map over torque x speed (TE x1 and x5), independent starts.
+    // Regime map over torque x speed (TE x1 and x5), independent starts,
+    // for both mesh-damping options.
     let torques = [5.0, 10.0, 20.0, 50.0, 100.0];
     let map_speeds: Vec<f64> = (0..21).map(|i| 6500.0 + 500.0 * i as f64).collect();
-    let t0 = Instant::now();
-    let cells = pool.install(|| regime_map(&models[0], &torques, &[1.0, 5.0], &map_speeds, &cfg, &|_, _| true))?;
-    println!(
-        "regime map ({} cells): {:.2} s",
-        cells.len(),
-        t0.elapsed().as_secs_f64()
-    );
-    println!("legend: 1 = P1 no impact, 2..9 = period-n, * = P1 impacting, q = quasi-periodic, c = chaos; upper case = double-sided");
-    for chunk in cells.chunks(map_speeds.len()) {
-        let row: String = chunk
-            .iter()
-            .map(|c| {
-                let ch = match c.motion {
-                    Motion::Periodic(1) if c.impact == ImpactRegime::NoImpact => '1',
-                    Motion::Periodic(1) => '*',
-                    Motion::Periodic(k) if k < 10 => char::from_digit(k as u32, 10).unwrap_or('n'),
-                    Motion::Periodic(_) => 'n',
-                    Motion::QuasiPeriodic => 'q',
-                    Motion::Chaotic => 'c',
-                };
-                if c.impact == ImpactRegime::DoubleSided {
-                    ch.to_ascii_uppercase()
-                } else {
-                    ch
-                }
-            })
-            .collect();
+    for damping in [MeshDamping::InContact, MeshDamping::Always] {
+        let mut p = HelicalPairParams::seed_a();
+        p.mesh_damping = damping;
+        let base = HelicalSweep {
+            pair: HelicalPair::new(p)?,
+            bearings: cases[0].1.clone(),
+        };
+        let t0 = Instant::now();
+        let cells = pool.install(|| regime_map(&base, &torques, &[1.0, 5.0], &map_speeds, &cfg, &|_, _| true))?;
         println!(
-            "  T = {:>5.1} N m, TE x{}: {row}",
-            chunk[0].input_torque_n_m, chunk[0].error_scale
+            "regime map, mesh damping {damping:?} ({} cells, 6500..16500 rpm step 500): {:.2} s",
+            cells.len(),
+            t0.elapsed().as_secs_f64()
         );
+        println!("  1 = P1 no impact, * = P1 impacting, 2-9 = period-n, n = period 10-16, q = quasi-periodic, c = chaos; upper case = double-sided");
+        print_map(&cells, map_speeds.len());
     }
     Ok(())
+}
+
+/// CPU time (user + system) of this process from /proc (Linux only); on a
+/// shared machine wall time includes waiting for other processes.
+fn process_cpu_s() -> Option<f64> {
+    let s = std::fs::read_to_string("/proc/self/stat").ok()?;
+    let rest = &s[s.rfind(')')? + 2..];
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    Some((f.get(11)?.parse::<f64>().ok()? + f.get(12)?.parse::<f64>().ok()?) / 100.0)
 }
