@@ -470,6 +470,20 @@ impl BearingSchedule {
         Ok(BearingSchedule { points })
     }
 
+    /// Sample a closure `speed_rpm -> (kr_n_per_m, ka_n_per_m)` at the given
+    /// ascending speeds (e.g. the bearing model at each sweep speed).
+    pub fn from_fn(speeds_rpm: &[f64], f: impl Fn(f64) -> (f64, f64)) -> Result<Self> {
+        Self::new(
+            speeds_rpm
+                .iter()
+                .map(|&s| {
+                    let (kr, ka) = f(s);
+                    (s, kr, ka)
+                })
+                .collect(),
+        )
+    }
+
     /// Constant stiffness.
     pub fn constant(kr_n_per_m: f64, ka_n_per_m: f64) -> Result<Self> {
         Self::new(vec![(0.0, kr_n_per_m, ka_n_per_m)])
@@ -662,4 +676,67 @@ pub fn regime_map(
         counter.tick(chunk.len())?;
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn schedule_interpolates_linearly_and_clamps() {
+        let s = BearingSchedule::new(vec![(1000.0, 2e8, 4e7), (3000.0, 1e8, 6e7)]).unwrap();
+        assert_eq!(s.at(500.0), (2e8, 4e7));
+        assert_eq!(s.at(2000.0), (1.5e8, 5e7));
+        assert_eq!(s.at(9000.0), (1e8, 6e7));
+        let f = BearingSchedule::from_fn(&[1000.0, 3000.0], |n| {
+            (2e8 - 5e4 * (n - 1000.0), 4e7 + 1e4 * (n - 1000.0))
+        })
+        .unwrap();
+        assert_eq!(f, s);
+        assert!(BearingSchedule::new(vec![(2.0, 1e8, 1e8), (1.0, 1e8, 1e8)]).is_err());
+        assert!(BearingSchedule::constant(-1.0, 1e8)
+            .unwrap_err()
+            .to_string()
+            .contains("kr_n_per_m"));
+    }
+
+    #[test]
+    fn sweep_rejects_bad_speeds_and_config() {
+        let osc = BacklashOscillator::new(0.05, 0.1, 0.1, 0.0).unwrap();
+        let cfg = SweepConfig::default();
+        let ok = |_: usize, _: usize| true;
+        assert!(sweep(&osc, &[], SweepDirection::Up, &cfg, &ok).is_err());
+        assert!(sweep(&osc, &[1.0, 0.5], SweepDirection::Up, &cfg, &ok).is_err());
+        let bad = SweepConfig {
+            recorded_periods: 1,
+            ..cfg
+        };
+        let e = sweep(&osc, &[1.0], SweepDirection::Up, &bad, &ok).unwrap_err();
+        assert!(e.to_string().contains("recorded_periods"));
+        let coarse = SweepConfig {
+            steps_per_period: 8,
+            ..cfg
+        };
+        let e = sweep(&osc, &[1.0], SweepDirection::Independent, &coarse, &ok).unwrap_err();
+        assert!(e.to_string().contains("steps_per_period"));
+    }
+
+    #[test]
+    fn progress_reports_every_speed_and_total() {
+        let osc = BacklashOscillator::new(0.05, 0.1, 0.02, 0.0).unwrap();
+        let cfg = SweepConfig {
+            transient_periods: 5,
+            recorded_periods: 4,
+            steps_per_period: 32,
+            lyapunov_periods: 0,
+            ..SweepConfig::default()
+        };
+        let seen = std::sync::Mutex::new(Vec::new());
+        let speeds = [0.5, 0.6, 0.7];
+        sweep(&osc, &speeds, SweepDirection::Down, &cfg, &|d, t| {
+            seen.lock().map(|mut v| v.push((d, t))).is_ok()
+        })
+        .unwrap();
+        assert_eq!(seen.into_inner().unwrap(), vec![(1, 3), (2, 3), (3, 3)]);
+    }
 }

@@ -598,6 +598,20 @@ impl HelicalPairSystem {
         self.b
     }
 
+    /// Mesh stiffness (N/m), transmission error (m) and its rate (m/s) at
+    /// time `t_s`, from the interpolated tables.
+    pub fn mesh_state(&self, t_s: f64) -> (f64, f64, f64) {
+        let phase = t_s / self.period;
+        let (k, _) = self.stiffness.eval(phase);
+        let (e, de) = self.error.eval(phase);
+        (k, e, de / self.period)
+    }
+
+    /// Mesh damping coefficient c_m (N s/m) and whether it acts inside the backlash.
+    pub fn mesh_damping(&self) -> (f64, bool) {
+        (self.cm, self.always)
+    }
+
     /// Static transmission error e(t) (m) from the interpolated table.
     pub fn transmission_error_m(&self, t_s: f64) -> f64 {
         self.error.eval(t_s / self.period).0
