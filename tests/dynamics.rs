@@ -502,6 +502,14 @@ fn sweeps_are_deterministic_across_thread_counts_and_cancellable() {
     };
     let (a, b) = (run(1), run(2));
     assert_eq!(a, b);
+    let map = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| regime_map(&varying, &[10.0, 30.0], &[1.0, 3.0], &speeds[..3], &cfg, &|_, _| true).unwrap())
+    };
+    assert_eq!(map(1), map(2));
     // Lock-step (batched) continuation equals the scalar continuation sweep.
     let scalar_up = sweep(&constant, &speeds, SweepDirection::Up, &cfg, &|_, _| true).unwrap();
     assert_eq!(a[0], scalar_up);
