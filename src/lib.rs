@@ -13,6 +13,7 @@
 
 pub mod bearing;
 pub mod config;
+pub mod dynamics;
 pub mod effects;
 pub mod error;
 pub mod gear;

@@ -1,0 +1,742 @@
+//! Speed sweeps (bifurcation diagrams) and regime maps.
+//!
+//! - `Up` / `Down`: continuation, the final state of one speed starts the
+//!   next (A, Figs. 14-15: accelerating and decelerating sweeps); sequential.
+//! - `Independent`: every speed starts from the model's static state;
+//!   speeds run in parallel (rayon).
+//!
+//! Independent sweeps (stiffness cases x directions) run in parallel with
+//! [`sweep_many`]; [`regime_map`] covers torque x speed x transmission-error
+//! scale. Every speed's result depends only on its inputs (and, for
+//! continuation, on the previous speed in a fixed order), so results do not
+//! depend on the number of threads.
+//!
+//! Progress/cancellation: `progress(done, total)` is called between chunks
+//! (after each speed for continuation sweeps, after each chunk of
+//! [`CHUNK`] speeds otherwise); returning `false` stops the work with
+//! `Error::Interrupted`.
+
+use super::batch::{poincare_sample_batch, HelicalBatch, LANES};
+use super::classify::{classify_motion, detect_jumps, impact_regime, ClassifyConfig, ImpactRegime, Motion};
+use super::gear_model::{BacklashOscillator, BacklashOscillatorSystem, HelicalPair, HelicalPairSystem};
+use super::lyapunov::{largest_lyapunov_benettin, LyapunovConfig};
+use super::ode::GridOde;
+use super::poincare::{poincare_sample, PoincareRecord};
+use crate::error::positive;
+use crate::{Error, Result};
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
+/// Speeds per progress chunk in parallel runs.
+pub const CHUNK: usize = 32;
+
+/// Progress hook: `(done, total) -> keep going?`.
+pub type Progress<'a> = &'a (dyn Fn(usize, usize) -> bool + Sync);
+
+/// A model that can be tabulated at a "speed" (rpm for the gear pair, the
+/// frequency ratio for the 1-DOF oscillator).
+pub trait SweepModel<const N: usize>: Sync {
+    /// The tabulated system.
+    type System: GridOde<N> + Send;
+    /// Build the system at `speed`.
+    fn system_at(&self, speed: f64, steps_per_period: usize) -> Result<Self::System>;
+    /// Relative mesh deflection (dynamic transmission error) at step `n`.
+    fn deflection(&self, sys: &Self::System, n: usize, x: &[f64; N]) -> f64;
+    /// Half backlash in the unit of [`SweepModel::deflection`].
+    fn half_backlash(&self) -> f64;
+    /// Static (start) state at `speed`.
+    fn initial_state(&self, speed: f64) -> Result<[f64; N]>;
+
+    /// Poincare records of several `(model, speed, start)` runs with the
+    /// deflection as observable. The default runs them one by one; models
+    /// with a lock-step batch integrator override it (results must equal the
+    /// one-by-one runs exactly).
+    fn poincare_many(
+        models: &[&Self],
+        speeds: &[f64],
+        starts: &[[f64; N]],
+        cfg: &SweepConfig,
+    ) -> Result<Vec<PoincareRecord<N>>>
+    where
+        Self: Sized,
+    {
+        models
+            .iter()
+            .zip(speeds)
+            .zip(starts)
+            .map(|((m, &s), x0)| record_speed(*m, s, x0, cfg))
+            .collect()
+    }
+}
+
+/// Sweep direction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum SweepDirection {
+    /// Continuation with increasing speed.
+    Up,
+    /// Continuation with decreasing speed.
+    Down,
+    /// Every speed from the static state.
+    Independent,
+}
+
+/// Sweep settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SweepConfig {
+    /// Mesh periods discarded at each speed.
+    pub transient_periods: usize,
+    /// Mesh periods sampled at each speed.
+    pub recorded_periods: usize,
+    /// RK4 steps per mesh period.
+    pub steps_per_period: usize,
+    /// Periods over which a Lyapunov exponent is measured at non-periodic
+    /// speeds (0: none, then the 0-1 test decides).
+    pub lyapunov_periods: usize,
+    /// Classifier settings.
+    pub classify: ClassifyConfig,
+    /// Jump threshold relative to the amplitude.
+    pub jump_rel: f64,
+    /// Jump threshold relative to the median local step.
+    pub jump_trend_factor: f64,
+}
+
+impl Default for SweepConfig {
+    /// The seed diagram settings: 300 transient + 100 recorded periods, 64
+    /// steps per period; 100-period Lyapunov check of non-periodic speeds.
+    fn default() -> Self {
+        SweepConfig {
+            transient_periods: 300,
+            recorded_periods: 100,
+            steps_per_period: 64,
+            lyapunov_periods: 100,
+            classify: ClassifyConfig::default(),
+            jump_rel: 0.2,
+            jump_trend_factor: 5.0,
+        }
+    }
+}
+
+/// Result at one speed.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct SpeedPoint {
+    /// Speed (rpm, or frequency ratio for the 1-DOF model).
+    pub speed: f64,
+    /// Relative deflection at each Poincare section point (bifurcation diagram ordinates).
+    pub poincare_deflection: Vec<f64>,
+    /// Minimum relative deflection over the recorded periods.
+    pub deflection_min: f64,
+    /// Maximum relative deflection over the recorded periods.
+    pub deflection_max: f64,
+    /// Motion class.
+    pub motion: Motion,
+    /// Contact regime.
+    pub impact: ImpactRegime,
+    /// Largest Lyapunov exponent per mesh period, when computed.
+    pub lyapunov_per_period: Option<f64>,
+}
+
+impl SpeedPoint {
+    /// Peak-to-peak half amplitude of the relative deflection.
+    pub fn amplitude(&self) -> f64 {
+        0.5 * (self.deflection_max - self.deflection_min)
+    }
+}
+
+/// A sweep's result, points in ascending speed order.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct SweepResult {
+    /// Direction swept.
+    pub direction: SweepDirection,
+    /// One point per speed, ascending speed.
+    pub points: Vec<SpeedPoint>,
+    /// Indices i with a jump between points i and i+1.
+    pub jumps: Vec<usize>,
+}
+
+fn check_config(cfg: &SweepConfig) -> Result<()> {
+    if cfg.recorded_periods < 2 {
+        return Err(Error::config(
+            "recorded_periods",
+            cfg.recorded_periods,
+            "must be at least 2",
+        ));
+    }
+    cfg.classify.check()?;
+    positive("jump_rel", cfg.jump_rel)?;
+    positive("jump_trend_factor", cfg.jump_trend_factor)?;
+    Ok(())
+}
+
+fn check_speeds(speeds: &[f64]) -> Result<()> {
+    if speeds.is_empty() {
+        return Err(Error::config("speeds", "[]", "need at least one speed"));
+    }
+    for &s in speeds {
+        positive("speeds", s)?;
+    }
+    if speeds.windows(2).any(|w| w[1] <= w[0]) {
+        return Err(Error::config("speeds", "unsorted", "must be strictly ascending"));
+    }
+    Ok(())
+}
+
+/// Poincare record of one speed from `x0` (scalar RK4).
+pub fn record_speed<const N: usize, M: SweepModel<N>>(
+    model: &M,
+    speed: f64,
+    x0: &[f64; N],
+    cfg: &SweepConfig,
+) -> Result<PoincareRecord<N>> {
+    let sys = model.system_at(speed, cfg.steps_per_period)?;
+    poincare_sample(&sys, x0, cfg.transient_periods, cfg.recorded_periods, |n, x| {
+        model.deflection(&sys, n, x)
+    })
+}
+
+/// Classify a recorded speed (computing a Lyapunov exponent from the final
+/// state if the section is not periodic and `cfg.lyapunov_periods > 0`).
+pub fn finish_point<const N: usize, M: SweepModel<N>>(
+    model: &M,
+    speed: f64,
+    rec: PoincareRecord<N>,
+    cfg: &SweepConfig,
+) -> Result<SpeedPoint> {
+    let periodic = super::classify::detect_period(
+        &rec.points,
+        &rec.state_range,
+        cfg.classify.rel_tol,
+        cfg.classify.max_period,
+    );
+    let lyapunov = if periodic.is_none() && cfg.lyapunov_periods > 0 {
+        let sys = model.system_at(speed, cfg.steps_per_period)?;
+        let scale = rec.state_range.map(|s| if s > 0.0 { s } else { 1.0 });
+        let lcfg = LyapunovConfig {
+            transient_steps: 0,
+            measure_steps: cfg.lyapunov_periods * cfg.steps_per_period,
+            renorm_steps: cfg.steps_per_period,
+            separation: 1e-6,
+        };
+        let (l, _) = largest_lyapunov_benettin(&sys, &rec.final_state, 0, &scale, &lcfg)?;
+        Some(l * sys.step() * cfg.steps_per_period as f64)
+    } else {
+        None
+    };
+    let motion = match periodic {
+        Some(n) => Motion::Periodic(n),
+        None => classify_motion(&rec.points, &rec.state_range, &rec.observable, lyapunov, &cfg.classify),
+    };
+    Ok(SpeedPoint {
+        speed,
+        impact: impact_regime(rec.observable_min, rec.observable_max, model.half_backlash()),
+        poincare_deflection: rec.observable,
+        deflection_min: rec.observable_min,
+        deflection_max: rec.observable_max,
+        motion,
+        lyapunov_per_period: lyapunov,
+    })
+}
+
+/// Simulate one speed from `x0`; returns the point and the final state.
+pub fn run_speed<const N: usize, M: SweepModel<N>>(
+    model: &M,
+    speed: f64,
+    x0: &[f64; N],
+    cfg: &SweepConfig,
+) -> Result<(SpeedPoint, [f64; N])> {
+    let rec = record_speed(model, speed, x0, cfg)?;
+    let xf = rec.final_state;
+    Ok((finish_point(model, speed, rec, cfg)?, xf))
+}
+
+fn finish(direction: SweepDirection, points: Vec<SpeedPoint>, cfg: &SweepConfig) -> SweepResult {
+    let amp: Vec<f64> = points.iter().map(SpeedPoint::amplitude).collect();
+    let jumps = detect_jumps(&amp, cfg.jump_rel, cfg.jump_trend_factor, 5);
+    SweepResult {
+        direction,
+        points,
+        jumps,
+    }
+}
+
+/// Shared progress counter for nested parallel work.
+struct Counter<'a> {
+    done: AtomicUsize,
+    total: usize,
+    cancelled: AtomicBool,
+    progress: Progress<'a>,
+}
+
+impl Counter<'_> {
+    fn tick(&self, n: usize) -> Result<()> {
+        if self.cancelled.load(Ordering::Relaxed) {
+            return Err(Error::Interrupted);
+        }
+        let done = self.done.fetch_add(n, Ordering::Relaxed) + n;
+        if !(self.progress)(done, self.total) {
+            self.cancelled.store(true, Ordering::Relaxed);
+            return Err(Error::Interrupted);
+        }
+        Ok(())
+    }
+}
+
+fn sweep_counted<const N: usize, M: SweepModel<N>>(
+    model: &M,
+    speeds: &[f64],
+    direction: SweepDirection,
+    cfg: &SweepConfig,
+    counter: &Counter,
+) -> Result<SweepResult> {
+    let points = match direction {
+        SweepDirection::Independent => {
+            let mut out = Vec::with_capacity(speeds.len());
+            for chunk in speeds.chunks(CHUNK) {
+                let part: Result<Vec<Vec<SpeedPoint>>> = chunk
+                    .par_chunks(LANES)
+                    .map(|sp| {
+                        let starts = sp.iter().map(|&s| model.initial_state(s)).collect::<Result<Vec<_>>>()?;
+                        let models = vec![model; sp.len()];
+                        let recs = M::poincare_many(&models, sp, &starts, cfg)?;
+                        sp.iter()
+                            .zip(recs)
+                            .map(|(&s, r)| finish_point(model, s, r, cfg))
+                            .collect()
+                    })
+                    .collect();
+                out.extend(part?.into_iter().flatten());
+                counter.tick(chunk.len())?;
+            }
+            out
+        }
+        SweepDirection::Up | SweepDirection::Down => {
+            let order: Vec<usize> = if direction == SweepDirection::Up {
+                (0..speeds.len()).collect()
+            } else {
+                (0..speeds.len()).rev().collect()
+            };
+            let mut x = model.initial_state(speeds[order[0]])?;
+            let mut slots: Vec<Option<SpeedPoint>> = vec![None; speeds.len()];
+            for &i in &order {
+                let (p, xf) = run_speed(model, speeds[i], &x, cfg)?;
+                x = xf;
+                slots[i] = Some(p);
+                counter.tick(1)?;
+            }
+            slots.into_iter().flatten().collect()
+        }
+    };
+    Ok(finish(direction, points, cfg))
+}
+
+/// Continuation sweeps of several jobs in lock-step (one batch per speed step).
+fn continuation_group<const N: usize, M: SweepModel<N>>(
+    jobs: &[(&M, SweepDirection)],
+    speeds: &[f64],
+    cfg: &SweepConfig,
+    counter: &Counter,
+) -> Result<Vec<SweepResult>> {
+    let ns = speeds.len();
+    let index = |d: SweepDirection, i: usize| if d == SweepDirection::Down { ns - 1 - i } else { i };
+    let models: Vec<&M> = jobs.iter().map(|(m, _)| *m).collect();
+    let mut xs = jobs
+        .iter()
+        .map(|(m, d)| m.initial_state(speeds[index(*d, 0)]))
+        .collect::<Result<Vec<_>>>()?;
+    let mut slots: Vec<Vec<Option<SpeedPoint>>> = vec![vec![None; ns]; jobs.len()];
+    for i in 0..ns {
+        let sp: Vec<f64> = jobs.iter().map(|(_, d)| speeds[index(*d, i)]).collect();
+        let recs = M::poincare_many(&models, &sp, &xs, cfg)?;
+        for (j, rec) in recs.into_iter().enumerate() {
+            xs[j] = rec.final_state;
+            slots[j][index(jobs[j].1, i)] = Some(finish_point(models[j], sp[j], rec, cfg)?);
+        }
+        counter.tick(jobs.len())?;
+    }
+    Ok(jobs
+        .iter()
+        .zip(slots)
+        .map(|((_, d), s)| finish(*d, s.into_iter().flatten().collect(), cfg))
+        .collect())
+}
+
+/// One sweep over ascending `speeds`.
+pub fn sweep<const N: usize, M: SweepModel<N>>(
+    model: &M,
+    speeds: &[f64],
+    direction: SweepDirection,
+    cfg: &SweepConfig,
+    progress: Progress,
+) -> Result<SweepResult> {
+    check_config(cfg)?;
+    check_speeds(speeds)?;
+    let counter = Counter {
+        done: AtomicUsize::new(0),
+        total: speeds.len(),
+        cancelled: AtomicBool::new(false),
+        progress,
+    };
+    sweep_counted(model, speeds, direction, cfg, &counter)
+}
+
+/// Several independent sweeps `(model, direction)` over the same speeds, in
+/// parallel; results in the order of `jobs`. Continuation sweeps are grouped
+/// (at most [`LANES`] per group, as many groups as rayon threads) and each
+/// group runs in lock-step; lanes are bitwise independent, so the grouping
+/// (and the thread count) does not change any result.
+pub fn sweep_many<const N: usize, M: SweepModel<N>>(
+    jobs: &[(&M, SweepDirection)],
+    speeds: &[f64],
+    cfg: &SweepConfig,
+    progress: Progress,
+) -> Result<Vec<SweepResult>> {
+    check_config(cfg)?;
+    check_speeds(speeds)?;
+    let counter = Counter {
+        done: AtomicUsize::new(0),
+        total: speeds.len() * jobs.len(),
+        cancelled: AtomicBool::new(false),
+        progress,
+    };
+    let cont: Vec<usize> = (0..jobs.len())
+        .filter(|&j| jobs[j].1 != SweepDirection::Independent)
+        .collect();
+    let indep: Vec<usize> = (0..jobs.len())
+        .filter(|&j| jobs[j].1 == SweepDirection::Independent)
+        .collect();
+    let threads = rayon::current_num_threads().max(1);
+    let group = cont.len().div_ceil(threads).clamp(1, LANES);
+    let groups: Vec<Vec<usize>> = cont.chunks(group).map(|c| c.to_vec()).collect();
+    let (cont_res, indep_res) = rayon::join(
+        || -> Result<Vec<Vec<SweepResult>>> {
+            groups
+                .par_iter()
+                .map(|g| {
+                    let js: Vec<(&M, SweepDirection)> = g.iter().map(|&j| jobs[j]).collect();
+                    continuation_group(&js, speeds, cfg, &counter)
+                })
+                .collect()
+        },
+        || -> Result<Vec<SweepResult>> {
+            indep
+                .par_iter()
+                .map(|&j| sweep_counted(jobs[j].0, speeds, jobs[j].1, cfg, &counter))
+                .collect()
+        },
+    );
+    let mut out: Vec<Option<SweepResult>> = vec![None; jobs.len()];
+    for (g, rs) in groups.iter().zip(cont_res?) {
+        for (&j, r) in g.iter().zip(rs) {
+            out[j] = Some(r);
+        }
+    }
+    for (&j, r) in indep.iter().zip(indep_res?) {
+        out[j] = Some(r);
+    }
+    Ok(out.into_iter().flatten().collect())
+}
+
+// ------------------------------------------------------------- models ----
+
+/// Bearing stiffness as a function of speed: `(speed_rpm, kr_n_per_m,
+/// ka_n_per_m)` samples, linear in speed between them and constant beyond
+/// the ends. A single sample is a constant stiffness.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BearingSchedule {
+    points: Vec<(f64, f64, f64)>,
+}
+
+impl BearingSchedule {
+    /// Validate: at least one sample, ascending speeds, positive stiffness.
+    pub fn new(points: Vec<(f64, f64, f64)>) -> Result<Self> {
+        if points.is_empty() {
+            return Err(Error::config(
+                "bearing_schedule",
+                "[]",
+                "needs at least one (speed_rpm, kr, ka) sample",
+            ));
+        }
+        for &(s, kr, ka) in &points {
+            crate::error::non_negative("bearing_schedule.speed_rpm", s)?;
+            positive("bearing_schedule.kr_n_per_m", kr)?;
+            positive("bearing_schedule.ka_n_per_m", ka)?;
+        }
+        if points.windows(2).any(|w| w[1].0 <= w[0].0) {
+            return Err(Error::config(
+                "bearing_schedule.speed_rpm",
+                "unsorted",
+                "must be strictly ascending",
+            ));
+        }
+        Ok(BearingSchedule { points })
+    }
+
+    /// Sample a closure `speed_rpm -> (kr_n_per_m, ka_n_per_m)` at the given
+    /// ascending speeds (e.g. the bearing model at each sweep speed).
+    pub fn from_fn(speeds_rpm: &[f64], f: impl Fn(f64) -> (f64, f64)) -> Result<Self> {
+        Self::new(
+            speeds_rpm
+                .iter()
+                .map(|&s| {
+                    let (kr, ka) = f(s);
+                    (s, kr, ka)
+                })
+                .collect(),
+        )
+    }
+
+    /// Constant stiffness.
+    pub fn constant(kr_n_per_m: f64, ka_n_per_m: f64) -> Result<Self> {
+        Self::new(vec![(0.0, kr_n_per_m, ka_n_per_m)])
+    }
+
+    /// `(kr, ka)` in N/m at `speed_rpm`.
+    pub fn at(&self, speed_rpm: f64) -> (f64, f64) {
+        let p = &self.points;
+        if speed_rpm <= p[0].0 {
+            return (p[0].1, p[0].2);
+        }
+        for w in p.windows(2) {
+            if speed_rpm <= w[1].0 {
+                let u = (speed_rpm - w[0].0) / (w[1].0 - w[0].0);
+                return (w[0].1 + u * (w[1].1 - w[0].1), w[0].2 + u * (w[1].2 - w[0].2));
+            }
+        }
+        let l = p[p.len() - 1];
+        (l.1, l.2)
+    }
+}
+
+/// The helical pair with a speed-dependent bearing stiffness.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HelicalSweep {
+    /// Gear pair (its own bearing stiffness is replaced by the schedule).
+    pub pair: HelicalPair,
+    /// Bearing stiffness vs speed.
+    pub bearings: BearingSchedule,
+}
+
+impl HelicalSweep {
+    fn pair_at(&self, speed_rpm: f64) -> Result<HelicalPair> {
+        let (kr, ka) = self.bearings.at(speed_rpm);
+        self.pair.with_bearing_stiffness(kr, ka)
+    }
+}
+
+impl SweepModel<14> for HelicalSweep {
+    type System = HelicalPairSystem;
+    fn system_at(&self, speed: f64, steps_per_period: usize) -> Result<HelicalPairSystem> {
+        self.pair_at(speed)?.system(speed, steps_per_period)
+    }
+    fn deflection(&self, sys: &HelicalPairSystem, n: usize, x: &[f64; 14]) -> f64 {
+        sys.relative_deflection_m(n, x)
+    }
+    fn half_backlash(&self) -> f64 {
+        self.pair.params().half_backlash_m
+    }
+    fn initial_state(&self, speed: f64) -> Result<[f64; 14]> {
+        self.pair_at(speed)?.static_state()
+    }
+
+    /// Lock-step batches of [`LANES`] systems (short batches are padded by
+    /// repeating their first lane).
+    fn poincare_many(
+        models: &[&Self],
+        speeds: &[f64],
+        starts: &[[f64; 14]],
+        cfg: &SweepConfig,
+    ) -> Result<Vec<PoincareRecord<14>>> {
+        let systems = models
+            .iter()
+            .zip(speeds)
+            .map(|(m, &s)| m.system_at(s, cfg.steps_per_period))
+            .collect::<Result<Vec<_>>>()?;
+        let mut out = Vec::with_capacity(systems.len());
+        for (sys, x0) in systems.chunks(LANES).zip(starts.chunks(LANES)) {
+            let pick = |l: usize| if l < sys.len() { l } else { 0 };
+            let batch = HelicalBatch::<LANES>::new(std::array::from_fn(|l| &sys[pick(l)]))?;
+            let st: [[f64; 14]; LANES] = std::array::from_fn(|l| x0[pick(l)]);
+            let recs = poincare_sample_batch(&batch, &st, cfg.transient_periods, cfg.recorded_periods)?;
+            out.extend(recs.into_iter().take(sys.len()));
+        }
+        Ok(out)
+    }
+}
+
+impl SweepModel<2> for BacklashOscillator {
+    type System = BacklashOscillatorSystem;
+    fn system_at(&self, speed: f64, steps_per_period: usize) -> Result<BacklashOscillatorSystem> {
+        self.system(speed, steps_per_period)
+    }
+    fn deflection(&self, _sys: &BacklashOscillatorSystem, _n: usize, x: &[f64; 2]) -> f64 {
+        x[0]
+    }
+    fn half_backlash(&self) -> f64 {
+        1.0
+    }
+    fn initial_state(&self, _speed: f64) -> Result<[f64; 2]> {
+        // Static contact: k f(x) = F_m  ->  x = F_m + sign(F_m).
+        Ok([self.mean_force + self.mean_force.signum(), 0.0])
+    }
+}
+
+/// One cell of a regime map.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct RegimeCell {
+    /// Input torque (N m).
+    pub input_torque_n_m: f64,
+    /// Transmission-error scale factor applied to the pair's TE samples (-).
+    pub error_scale: f64,
+    /// Speed (rpm).
+    pub speed_rpm: f64,
+    /// Motion class.
+    pub motion: Motion,
+    /// Contact regime.
+    pub impact: ImpactRegime,
+    /// Half peak-to-peak relative deflection (m).
+    pub amplitude_m: f64,
+    /// Mean of the relative deflection extremes (m).
+    pub mean_deflection_m: f64,
+}
+
+/// Regime map over error scale x torque x speed (speed fastest), every cell
+/// started from its static state (independent), in parallel.
+pub fn regime_map(
+    base: &HelicalSweep,
+    torques_n_m: &[f64],
+    error_scales: &[f64],
+    speeds_rpm: &[f64],
+    cfg: &SweepConfig,
+    progress: Progress,
+) -> Result<Vec<RegimeCell>> {
+    check_config(cfg)?;
+    check_speeds(speeds_rpm)?;
+    if torques_n_m.is_empty() || error_scales.is_empty() {
+        return Err(Error::config(
+            "torques_n_m",
+            "[]",
+            "need at least one torque and one error scale",
+        ));
+    }
+    let mut models = Vec::new();
+    for &e in error_scales {
+        for &t in torques_n_m {
+            let pair = base.pair.with_torque_and_error_scale(t, e)?;
+            models.push((
+                t,
+                e,
+                HelicalSweep {
+                    pair,
+                    bearings: base.bearings.clone(),
+                },
+            ));
+        }
+    }
+    let cells: Vec<(usize, usize)> = (0..models.len())
+        .flat_map(|m| (0..speeds_rpm.len()).map(move |s| (m, s)))
+        .collect();
+    let counter = Counter {
+        done: AtomicUsize::new(0),
+        total: cells.len(),
+        cancelled: AtomicBool::new(false),
+        progress,
+    };
+    let mut out = Vec::with_capacity(cells.len());
+    for chunk in cells.chunks(CHUNK) {
+        let part: Result<Vec<Vec<RegimeCell>>> = chunk
+            .par_chunks(LANES)
+            .map(|group| {
+                let ms: Vec<&HelicalSweep> = group.iter().map(|&(m, _)| &models[m].2).collect();
+                let sp: Vec<f64> = group.iter().map(|&(_, s)| speeds_rpm[s]).collect();
+                let starts = ms
+                    .iter()
+                    .zip(&sp)
+                    .map(|(m, &s)| m.initial_state(s))
+                    .collect::<Result<Vec<_>>>()?;
+                let recs = HelicalSweep::poincare_many(&ms, &sp, &starts, cfg)?;
+                group
+                    .iter()
+                    .zip(recs)
+                    .map(|(&(m, s), rec)| {
+                        let (t, e, model) = &models[m];
+                        let p = finish_point(model, speeds_rpm[s], rec, cfg)?;
+                        Ok(RegimeCell {
+                            input_torque_n_m: *t,
+                            error_scale: *e,
+                            speed_rpm: p.speed,
+                            motion: p.motion,
+                            impact: p.impact,
+                            amplitude_m: p.amplitude(),
+                            mean_deflection_m: 0.5 * (p.deflection_max + p.deflection_min),
+                        })
+                    })
+                    .collect()
+            })
+            .collect();
+        out.extend(part?.into_iter().flatten());
+        counter.tick(chunk.len())?;
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn schedule_interpolates_linearly_and_clamps() {
+        let s = BearingSchedule::new(vec![(1000.0, 2e8, 4e7), (3000.0, 1e8, 6e7)]).unwrap();
+        assert_eq!(s.at(500.0), (2e8, 4e7));
+        assert_eq!(s.at(2000.0), (1.5e8, 5e7));
+        assert_eq!(s.at(9000.0), (1e8, 6e7));
+        let f = BearingSchedule::from_fn(&[1000.0, 3000.0], |n| {
+            (2e8 - 5e4 * (n - 1000.0), 4e7 + 1e4 * (n - 1000.0))
+        })
+        .unwrap();
+        assert_eq!(f, s);
+        assert!(BearingSchedule::new(vec![(2.0, 1e8, 1e8), (1.0, 1e8, 1e8)]).is_err());
+        assert!(BearingSchedule::constant(-1.0, 1e8)
+            .unwrap_err()
+            .to_string()
+            .contains("kr_n_per_m"));
+    }
+
+    #[test]
+    fn sweep_rejects_bad_speeds_and_config() {
+        let osc = BacklashOscillator::new(0.05, 0.1, 0.1, 0.0).unwrap();
+        let cfg = SweepConfig::default();
+        let ok = |_: usize, _: usize| true;
+        assert!(sweep(&osc, &[], SweepDirection::Up, &cfg, &ok).is_err());
+        assert!(sweep(&osc, &[1.0, 0.5], SweepDirection::Up, &cfg, &ok).is_err());
+        let bad = SweepConfig {
+            recorded_periods: 1,
+            ..cfg
+        };
+        let e = sweep(&osc, &[1.0], SweepDirection::Up, &bad, &ok).unwrap_err();
+        assert!(e.to_string().contains("recorded_periods"));
+        let coarse = SweepConfig {
+            steps_per_period: 8,
+            ..cfg
+        };
+        let e = sweep(&osc, &[1.0], SweepDirection::Independent, &coarse, &ok).unwrap_err();
+        assert!(e.to_string().contains("steps_per_period"));
+    }
+
+    #[test]
+    fn progress_reports_every_speed_and_total() {
+        let osc = BacklashOscillator::new(0.05, 0.1, 0.02, 0.0).unwrap();
+        let cfg = SweepConfig {
+            transient_periods: 5,
+            recorded_periods: 4,
+            steps_per_period: 32,
+            lyapunov_periods: 0,
+            ..SweepConfig::default()
+        };
+        let seen = std::sync::Mutex::new(Vec::new());
+        let speeds = [0.5, 0.6, 0.7];
+        sweep(&osc, &speeds, SweepDirection::Down, &cfg, &|d, t| {
+            seen.lock().map(|mut v| v.push((d, t))).is_ok()
+        })
+        .unwrap();
+        assert_eq!(seen.into_inner().unwrap(), vec![(1, 3), (2, 3), (3, 3)]);
+    }
+}

@@ -1,0 +1,23 @@
+//! Nonlinear gear dynamics: ODE traits, RK4 / Dormand-Prince integrators,
+//! the 1-DOF backlash oscillator and the 8-DOF (reduced to 7-DOF) helical
+//! pair of PHYSICS.md section 7 (A-43 .. A-50), Lyapunov exponents, Poincare
+//! sections, motion classification and speed sweeps (A, section 3.3,
+//! Figs. 14-15).
+
+pub mod batch;
+pub mod bifurcation;
+pub mod classify;
+pub mod dop853;
+pub mod gear_model;
+pub mod integrate;
+pub mod lyapunov;
+pub mod ode;
+pub mod poincare;
+
+pub use bifurcation::{
+    regime_map, sweep, sweep_many, BearingSchedule, HelicalSweep, RegimeCell, SpeedPoint, SweepConfig, SweepDirection,
+    SweepModel, SweepResult,
+};
+pub use classify::{ClassifyConfig, ImpactRegime, Motion};
+pub use gear_model::{BacklashOscillator, BearingSupport, GearBody, HelicalPair, HelicalPairParams, MeshDamping};
+pub use ode::{GridOde, OdeSystem, PeriodicTable};
