@@ -15,6 +15,7 @@ pub mod bearing;
 pub mod effects;
 pub mod error;
 pub mod materials;
+pub mod rotor;
 pub mod units;
 
 #[cfg(feature = "python")]
