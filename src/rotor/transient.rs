@@ -8,7 +8,8 @@
 //! Nonlinear forces (e.g. the bearing solver's ball forces) enter through a
 //! [`NonlinearForce`] callback and are resolved each step by a modified
 //! Newton iteration whose tangent (finite-difference Jacobian of the
-//! callback) is refreshed only when convergence slows.
+//! callback) is kept from step to step and refreshed whenever an iteration
+//! contracts the increment by less than a factor 4.
 //!
 //! Optionally the model is reduced to the lowest undamped modes
 //! (pseudo-modal reduction, q = Phi xi), which removes the very stiff,
@@ -205,6 +206,8 @@ fn nonlinear_tangent(
 }
 
 const BETA: f64 = 0.25;
+/// Refresh the tangent when an iteration shrinks the increment by less than this factor.
+const SLOW_CONTRACTION: f64 = 0.25;
 const GAMMA: f64 = 0.5;
 
 fn effective_matrix(
@@ -338,14 +341,13 @@ pub fn time_response(
     let c1 = 1.0 / (BETA * dt * dt);
     let c2 = 1.0 / (BETA * dt);
     let c3 = 1.0 / (2.0 * BETA) - 1.0;
-    let refresh_after = 5;
 
     for step in 1..=steps {
         let t1 = step as f64 * dt;
         let f_ext = lin.external(t1);
         let mut x1 = &xi + &v * dt + &a * (0.5 * dt * dt);
         let mut iter = 0;
-        let mut refreshed = false;
+        let mut previous_change = f64::INFINITY;
         loop {
             iter += 1;
             let a1 = (&x1 - &xi) * c1 - &v * c2 - &a * c3;
@@ -377,13 +379,17 @@ pub fn time_response(
                     options.tolerance,
                 ));
             }
-            if iter % refresh_after == 0 && !refreshed {
+            // Slow (or no) contraction of the modified Newton iteration:
+            // refresh the tangent at the current iterate (full Newton step).
+            if change > SLOW_CONTRACTION * previous_change {
                 if let Some(f) = nonlinear {
+                    let a1 = (&x1 - &xi) * c1 - &v * c2 - &a * c3;
+                    let v1 = &v + (&a * (1.0 - GAMMA) + &a1 * GAMMA) * dt;
                     (jq, jv) = nonlinear_tangent(&lin, f, n_phys, t1, &x1, &v1)?;
                     lu = effective_matrix(&lin, dt, &jq, &jv)?;
-                    refreshed = true;
                 }
             }
+            previous_change = change;
         }
         hist.iterations += iter;
         let a1 = (&x1 - &xi) * c1 - &v * c2 - &a * c3;
