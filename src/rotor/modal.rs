@@ -84,6 +84,8 @@ pub struct CriticalSpeed {
     /// Excitation order (1 for 1X).
     pub harmonic: f64,
     pub whirl: Whirl,
+    /// Neighbouring diagram speeds that bracket the crossing [rpm].
+    pub bracket_rpm: [f64; 2],
 }
 
 /// Eigenvalues of the quadratic pencil of `m` (all of them, 2n).
@@ -275,6 +277,7 @@ impl CampbellDiagram {
                         branch: k,
                         harmonic,
                         whirl: nearest.modes[k].whirl,
+                        bracket_rpm: [a.speed_rpm, b.speed_rpm],
                     });
                 }
             }
@@ -290,6 +293,66 @@ impl CampbellDiagram {
             .map(|p| p.modes.get(k).map_or(f64::NAN, |m| m.frequency_hz))
             .collect()
     }
+}
+
+/// Refine a critical speed from [`CampbellDiagram::critical_speeds`] by
+/// the Illinois variant of regula falsi on g(n) = f_branch(n) - harmonic n / 60
+/// inside its bracket, with fresh eigen-solutions at each trial speed (same
+/// options, and the same reduction basis, as the diagram).
+pub fn refine_critical_speed(rotor: &Rotor, c: &CriticalSpeed, options: &CampbellOptions) -> Result<CriticalSpeed> {
+    let basis = match options.reduced_modes {
+        Some(r) => Some(rotor.modal_basis(options.basis_speed_rpm, r)?),
+        None => None,
+    };
+    let opts = CampbellOptions {
+        modes: options.modes.max(c.branch + 1),
+        ..options.clone()
+    };
+    let g = |n: f64| -> Result<(f64, Whirl)> {
+        let modes = modes_at(rotor, n, basis.as_ref(), &opts)?;
+        let m = modes
+            .get(c.branch)
+            .ok_or_else(|| Error::config("branch", c.branch, "branch absent at this speed"))?;
+        Ok((m.frequency_hz - c.harmonic * n / 60.0, m.whirl))
+    };
+    let [mut a, mut b] = c.bracket_rpm;
+    let (mut ga, _) = g(a)?;
+    let (mut gb, _) = g(b)?;
+    if ga * gb > 0.0 {
+        return Err(Error::config(
+            "bracket_rpm",
+            format!("{a}..{b}"),
+            "does not bracket a crossing",
+        ));
+    }
+    let tol = 1e-9 * b.abs().max(1.0);
+    let max_iter = 60;
+    for _ in 0..max_iter {
+        let n = (a * gb - b * ga) / (gb - ga);
+        let (gn, whirl) = g(n)?;
+        if gn == 0.0 || (b - a).abs() < tol || gn.abs() < 1e-12 * c.frequency_hz.max(1.0) {
+            return Ok(CriticalSpeed {
+                speed_rpm: n,
+                frequency_hz: c.harmonic * n / 60.0,
+                whirl,
+                ..*c
+            });
+        }
+        if gn * gb < 0.0 {
+            // Root between b and n: b becomes the far end.
+            (a, ga) = (b, gb);
+        } else {
+            // Same side as b twice: halve the stale end (Illinois).
+            ga *= 0.5;
+        }
+        (b, gb) = (n, gn);
+    }
+    Err(Error::convergence(
+        "critical speed (Illinois)",
+        max_iter,
+        (b - a).abs(),
+        tol,
+    ))
 }
 
 #[cfg(test)]
@@ -320,15 +383,11 @@ mod tests {
         }
     }
 
-    #[test]
-    fn rigid_disk_on_springs_gyroscopic_splitting() {
-        // Short thick steel shaft (bending stiffness ~1900 x the springs, so
-        // effectively rigid) with a disk at its centre, on two equal
-        // isotropic springs k at the ends (+-a from the centre). Rigid-body
-        // totals: m, Ip, Id about the centre. Translation decouples:
-        // w_t = sqrt(2k/m). Tilt: Id w^2 -+ Ip Omega w - 2 k a^2 = 0, i.e.
-        // w_f,b = (+-Ip W + sqrt(Ip^2 W^2 + 8 Id k a^2)) / (2 Id)
-        // (Friswell et al. 2010, section 3.5, rigid rotor).
+    /// Short thick steel shaft (bending stiffness ~1900 x the springs, so
+    /// effectively rigid) with a disk at its centre, on two equal isotropic
+    /// springs k at the ends (+-a from the centre). Returns the rotor and
+    /// its rigid-body totals (k, a, m, Ip, Id about the centre).
+    fn disk_on_springs() -> (Rotor, [f64; 5]) {
         let (k, a, d) = (2e5, 0.1, 0.05);
         let steel = Material::shaft_steel();
         let disk = Disk {
@@ -355,6 +414,15 @@ mod tests {
         let m = disk.mass_kg + ms;
         let ip = disk.polar_inertia_kg_m2 + ms * d * d / 8.0;
         let id = disk.diametral_inertia_kg_m2 + ms * (d * d / 16.0 + (2.0 * a).powi(2) / 12.0);
+        (r, [k, a, m, ip, id])
+    }
+
+    #[test]
+    fn rigid_disk_on_springs_gyroscopic_splitting() {
+        // Translation decouples: w_t = sqrt(2k/m). Tilt: Id w^2 -+ Ip Omega w - 2 k a^2 = 0,
+        // w_f,b = (+-Ip W + sqrt(Ip^2 W^2 + 8 Id k a^2)) / (2 Id)
+        // (Friswell et al. 2010, section 3.5, rigid rotor).
+        let (r, [k, a, m, ip, id]) = disk_on_springs();
         let speed_rpm = 20_000.0;
         let w = crate::units::rpm_to_rad_s(speed_rpm);
         let root = (ip * ip * w * w + 8.0 * id * k * a * a).sqrt();
@@ -372,6 +440,40 @@ mod tests {
             .filter(|m| (m.frequency_hz - wt).abs() < 2e-3 * wt)
             .collect();
         assert_eq!(t.len(), 2, "translation {wt} (forward + backward) not in {modes:?}");
+    }
+
+    #[test]
+    fn rigid_disk_critical_speeds_match_closed_form() {
+        // 1X crossings (w = Omega): translation at sqrt(2k/m); backward tilt
+        // at sqrt(2 k a^2 / (Id + Ip)); a disk-like rotor (Ip > Id) has no
+        // forward tilt critical. Coarse diagram + regula-falsi refinement.
+        let (r, [k, a, m, ip, id]) = disk_on_springs();
+        assert!(ip > id);
+        let to_rpm = 30.0 / PI;
+        let n_t = (2.0 * k / m).sqrt() * to_rpm;
+        let n_b = (2.0 * k * a * a / (id + ip)).sqrt() * to_rpm;
+        let speeds: Vec<f64> = (0..=12).map(|i| 250.0 * i as f64).collect();
+        let opts = CampbellOptions::default();
+        let d = campbell(&r, &speeds, &opts).unwrap();
+        let crit = d.critical_speeds(1.0);
+        assert_eq!(crit.len(), 3, "{crit:?}");
+        let refined: Vec<CriticalSpeed> = crit
+            .iter()
+            .map(|c| refine_critical_speed(&r, c, &opts).unwrap())
+            .collect();
+        assert!((refined[0].speed_rpm - n_b).abs() < 2e-3 * n_b, "{refined:?} vs {n_b}");
+        assert_eq!(refined[0].whirl, Whirl::Backward);
+        for c in &refined[1..] {
+            assert!((c.speed_rpm - n_t).abs() < 2e-3 * n_t, "{c:?} vs {n_t}");
+        }
+        // The refined speed solves f_branch(n) = n / 60 of the model itself.
+        let c = &refined[0];
+        let f = modes_at(&r, c.speed_rpm, None, &opts).unwrap()[c.branch].frequency_hz;
+        assert!(
+            (f - c.speed_rpm / 60.0).abs() < 1e-8 * f,
+            "{f} vs {}",
+            c.speed_rpm / 60.0
+        );
     }
 
     #[test]
