@@ -207,7 +207,7 @@ fn nonlinear_tangent(
 
 const BETA: f64 = 0.25;
 /// Refresh the tangent when an iteration shrinks the increment by less than this factor.
-const SLOW_CONTRACTION: f64 = 0.25;
+const SLOW_CONTRACTION: f64 = 0.1;
 const GAMMA: f64 = 0.5;
 
 fn effective_matrix(
