@@ -448,3 +448,51 @@ fn speed_dependent_bearing_closure_equals_constant_bearing_at_that_speed() {
     let rest = modes_at(&closure, 0.0, None, &opts).unwrap();
     assert!(a[0].frequency_hz > rest[0].frequency_hz * 1.05);
 }
+
+#[test]
+fn spinning_pinned_shaft_matches_timoshenko_whirl_frequency_equation() {
+    // Spinning Timoshenko beam, pinned-pinned, complex r = x + i y:
+    // w = W sin(kz) e^{i w t}, psi = P cos(kz) e^{i w t}, k = pi / L gives
+    // (kGA k^2 - rho A w^2)(EI k^2 + kGA - rho I w^2 +- 2 rho I Omega w) = (kGA k)^2,
+    // + forward, - backward (gyroscopic moment of the polar inertia 2 rho I per
+    // length; Friswell et al. 2010, sec. 5.3-5.4). Without shear (kGA -> inf)
+    // it reduces to the Rayleigh beam EI k^4 - (rho A + rho I k^2) w^2 +- 2 rho I Omega k^2 w = 0.
+    let (l, d) = (0.5, 0.05);
+    let r = pinned_shaft(l, d, 16);
+    let s = ShaftSection::new(l, d, 0.0, Material::shaft_steel()).unwrap();
+    let m = &s.material;
+    let kga = shear_coefficient_hollow(m.poisson_ratio, 0.0) * m.youngs_modulus_pa / (2.0 * (1.0 + m.poisson_ratio))
+        * s.area_m2();
+    let (ra, ri, ei) = (
+        m.density_kg_m3 * s.area_m2(),
+        m.density_kg_m3 * s.second_moment_m4(),
+        m.youngs_modulus_pa * s.second_moment_m4(),
+    );
+    let omega = 1e4;
+    let k = PI / l;
+    let root = |sign: f64| {
+        let f = |w: f64| {
+            (kga * k * k - ra * w * w) * (ei * k * k + kga - ri * w * w + sign * 2.0 * ri * omega * w)
+                - (kga * k).powi(2)
+        };
+        let (mut lo, mut hi) = (0.0, (kga * k * k / ra).sqrt());
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if f(mid) > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi) / (2.0 * PI)
+    };
+    let (wf, wb) = (root(1.0), root(-1.0));
+    let modes = modes_at(&r, omega * 30.0 / PI, None, &CampbellOptions::default()).unwrap();
+    let (b, f) = (modes[0], modes[1]);
+    assert_eq!(b.whirl, thermobear::rotor::modal::Whirl::Backward);
+    assert_eq!(f.whirl, thermobear::rotor::modal::Whirl::Forward);
+    assert!((f.frequency_hz - wf).abs() < 1e-3 * wf, "{} vs {wf}", f.frequency_hz);
+    assert!((b.frequency_hz - wb).abs() < 1e-3 * wb, "{} vs {wb}", b.frequency_hz);
+    let split = f.frequency_hz - b.frequency_hz;
+    assert!((split - (wf - wb)).abs() < 1e-2 * (wf - wb), "{split} vs {}", wf - wb);
+}
