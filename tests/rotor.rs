@@ -246,7 +246,7 @@ fn undamped_gyroscopic_free_vibration_conserves_energy() {
     let e0 = mechanical_energy_j(&sys, &q0, &v0);
     let opts = TransientOptions::new(30_000.0, 0.01, 2e-5, NOSE_POSITION_M);
     let h = time_response(&r, &[], None, Some((&q0, &v0)), &opts).unwrap();
-    let e1 = mechanical_energy_j(&sys, &h.final_displacement, &h.final_velocity);
+    let e1 = mechanical_energy_j(&sys, &h.final_displacement_si, &h.final_velocity_si);
     assert!((e1 - e0).abs() < 1e-8 * e0, "{e0} -> {e1}");
     // Energy moved between x and y planes (gyroscopic coupling is active).
     assert!(h.displacement_y_m.iter().any(|y| y.abs() > 1e-9));
@@ -389,7 +389,7 @@ fn undamped_nonlinear_free_vibration_conserves_total_energy() {
     let tail = r.dof(r.node_at(REAR_BEARING_POSITIONS_M[1]).unwrap(), LateralDof::X);
     let mut f = DVector::zeros(r.dof_count());
     f[tail] = 1.0;
-    let shape = sys.stiffness.clone().lu().solve(&f).unwrap();
+    let shape = sys.stiffness_si.clone().lu().solve(&f).unwrap();
     let q0 = &shape * (2e-6 / shape[tail]);
     let v0 = DVector::zeros(r.dof_count());
     let e0 = energy(&q0, &v0);
@@ -399,7 +399,7 @@ fn undamped_nonlinear_free_vibration_conserves_total_energy() {
         let mut opts = TransientOptions::new(30_000.0, 0.0025, dt, NOSE_POSITION_M);
         opts.tolerance = 1e-8;
         let h = time_response(&r, &[], Some(&cb), Some((&q0, &v0)), &opts).unwrap();
-        ((energy(&h.final_displacement, &h.final_velocity) - e0) / e0).abs()
+        ((energy(&h.final_displacement_si, &h.final_velocity_si) - e0) / e0).abs()
     };
     // Second-order scheme: the drift shrinks with dt (it oscillates in time,
     // bounded by O(dt^2); measured 1.1e-2 -> 2.1e-4 at this end time).

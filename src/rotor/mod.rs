@@ -106,20 +106,23 @@ pub enum LateralDof {
     ThetaY = 3,
 }
 
-/// Global matrices of the rotor at one speed.
+/// Global matrices of the rotor at one speed. `_si`: SI blocks per DOF
+/// pair (kg, kg m, kg m^2 for mass; N/m, N/rad, N m/rad for stiffness;
+/// the same per unit velocity for damping; kg m^2 for the gyroscopic
+/// matrix per rad/s of spin; N and N m for forces).
 #[derive(Debug, Clone, PartialEq)]
 pub struct SystemMatrices {
     /// Spin speed Omega [rad/s].
     pub spin_speed_rad_s: f64,
-    pub mass: DMatrix<f64>,
+    pub mass_si: DMatrix<f64>,
     /// Gyroscopic matrix per unit spin speed (multiply by Omega), skew.
-    pub gyroscopic: DMatrix<f64>,
+    pub gyroscopic_si: DMatrix<f64>,
     /// Shaft + bearings (+ UMP negative stiffness).
-    pub stiffness: DMatrix<f64>,
+    pub stiffness_si: DMatrix<f64>,
     /// Modal structural damping + bearing damping.
-    pub damping: DMatrix<f64>,
+    pub damping_si: DMatrix<f64>,
     /// Constant forces (UMP from static eccentricity) [N, N m].
-    pub static_force: DVector<f64>,
+    pub static_force_si: DVector<f64>,
 }
 
 impl SystemMatrices {
@@ -128,22 +131,22 @@ impl SystemMatrices {
         let p = |m: &DMatrix<f64>| phi.transpose() * m * phi;
         SystemMatrices {
             spin_speed_rad_s: self.spin_speed_rad_s,
-            mass: p(&self.mass),
-            gyroscopic: p(&self.gyroscopic),
-            stiffness: p(&self.stiffness),
-            damping: p(&self.damping),
-            static_force: phi.transpose() * &self.static_force,
+            mass_si: p(&self.mass_si),
+            gyroscopic_si: p(&self.gyroscopic_si),
+            stiffness_si: p(&self.stiffness_si),
+            damping_si: p(&self.damping_si),
+            static_force_si: phi.transpose() * &self.static_force_si,
         }
     }
 
     /// Number of coordinates.
     pub fn size(&self) -> usize {
-        self.mass.nrows()
+        self.mass_si.nrows()
     }
 
     /// Total viscous matrix C + Omega G.
     pub fn damping_and_gyroscopic(&self) -> DMatrix<f64> {
-        &self.damping + &self.gyroscopic * self.spin_speed_rad_s
+        &self.damping_si + &self.gyroscopic_si * self.spin_speed_rad_s
     }
 }
 
@@ -152,8 +155,8 @@ impl SystemMatrices {
 pub struct Rotor {
     spec: RotorSpec,
     mesh: ShaftMesh,
-    mass: DMatrix<f64>,
-    gyroscopic: DMatrix<f64>,
+    mass_si: DMatrix<f64>,
+    gyroscopic_si: DMatrix<f64>,
     shaft_stiffness: DMatrix<f64>,
     structural_damping: DMatrix<f64>,
     bearing_nodes: Vec<usize>,
@@ -214,8 +217,8 @@ impl Rotor {
         let mut rotor = Rotor {
             spec,
             mesh,
-            mass,
-            gyroscopic,
+            mass_si: mass,
+            gyroscopic_si: gyroscopic,
             shaft_stiffness,
             structural_damping: DMatrix::zeros(n, n),
             bearing_nodes,
@@ -237,7 +240,7 @@ impl Rotor {
 
     /// Number of generalized coordinates (4 per node).
     pub fn dof_count(&self) -> usize {
-        self.mass.nrows()
+        self.mass_si.nrows()
     }
 
     /// Node at an axial position (must be a mesh node).
@@ -296,11 +299,11 @@ impl Rotor {
         }
         Ok(SystemMatrices {
             spin_speed_rad_s: rpm_to_rad_s(speed_rpm),
-            mass: self.mass.clone(),
-            gyroscopic: self.gyroscopic.clone(),
-            stiffness,
-            damping: &self.structural_damping + bearing_damping,
-            static_force,
+            mass_si: self.mass_si.clone(),
+            gyroscopic_si: self.gyroscopic_si.clone(),
+            stiffness_si: stiffness,
+            damping_si: &self.structural_damping + bearing_damping,
+            static_force_si: static_force,
         })
     }
 
@@ -310,9 +313,9 @@ impl Rotor {
     /// stiffness) come out as negative squared frequencies, reported as -sqrt(|l|).
     pub fn undamped_modes(&self, speed_rpm: f64) -> Result<(Vec<f64>, DMatrix<f64>)> {
         let (k, _) = self.stiffness_and_bearing_damping(speed_rpm)?;
-        let (values, l_q) = symmetric_modes(&self.mass, &k)?;
+        let (values, l_q) = symmetric_modes(&self.mass_si, &k)?;
         // Mode shapes phi = L^-T Q.
-        let l = self.mass.clone().cholesky().ok_or_else(not_positive_mass)?.l();
+        let l = self.mass_si.clone().cholesky().ok_or_else(not_positive_mass)?.l();
         let phi = l
             .transpose()
             .solve_upper_triangular(&l_q)
@@ -341,8 +344,8 @@ impl Rotor {
             return Ok(DMatrix::zeros(n, n));
         }
         let (k, _) = self.stiffness_and_bearing_damping(0.0)?;
-        let (values, q) = symmetric_modes(&self.mass, &k)?;
-        let l = self.mass.clone().cholesky().ok_or_else(not_positive_mass)?.l();
+        let (values, q) = symmetric_modes(&self.mass_si, &k)?;
+        let l = self.mass_si.clone().cholesky().ok_or_else(not_positive_mass)?.l();
         // M Phi = L L^T L^-T Q = L Q.
         let lq = &l * &q;
         let mut scaled = lq.clone();

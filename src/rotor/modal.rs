@@ -100,8 +100,8 @@ pub struct CriticalSpeed {
 pub fn eigenvalues(m: &SystemMatrices) -> Result<Vec<Complex<f64>>> {
     let n = m.size();
     let not_pd = || Error::config("mass", "matrix", "not positive definite");
-    let l = m.mass.clone().cholesky().ok_or_else(not_pd)?.l();
-    let (lambda, q) = super::symmetric_modes(&m.mass, &m.stiffness)?;
+    let l = m.mass_si.clone().cholesky().ok_or_else(not_pd)?.l();
+    let (lambda, q) = super::symmetric_modes(&m.mass_si, &m.stiffness_si)?;
     // D~ = Q^T L^-1 D L^-T Q.
     let d = m.damping_and_gyroscopic();
     let y = l.solve_lower_triangular(&d).ok_or_else(not_pd)?;
@@ -126,7 +126,7 @@ pub fn eigenvalues(m: &SystemMatrices) -> Result<Vec<Complex<f64>>> {
 pub fn dynamic_stiffness(m: &SystemMatrices, s: Complex<f64>) -> DMatrix<Complex<f64>> {
     let d = m.damping_and_gyroscopic();
     DMatrix::from_fn(m.size(), m.size(), |i, j| {
-        Complex::new(m.stiffness[(i, j)], 0.0) + s * d[(i, j)] + s * s * m.mass[(i, j)]
+        Complex::new(m.stiffness_si[(i, j)], 0.0) + s * d[(i, j)] + s * s * m.mass_si[(i, j)]
     })
 }
 
@@ -194,7 +194,7 @@ pub fn modes_at(
         .collect();
     kept.sort_by(|a, b| a.im.total_cmp(&b.im));
     let take = options.modes.min(kept.len());
-    let mass_diagonal = full.mass.diagonal();
+    let mass_diagonal = full.mass_si.diagonal();
     // A (numerically) repeated pair has no defined whirl direction (any
     // combination of forward and backward is a mode, e.g. at rest).
     let repeated = |k: usize| {

@@ -141,8 +141,8 @@ fn probe_response(speed_rpm: f64, w: f64, x: Complex<f64>, y: Complex<f64>) -> H
 /// Static deflection under the constant forces (UMP of a static
 /// eccentricity): K q = f_static [m, rad].
 pub fn static_deflection(m: &SystemMatrices) -> Result<DVector<f64>> {
-    let k: &DMatrix<f64> = &m.stiffness;
-    k.clone().lu().solve(&m.static_force).ok_or_else(|| {
+    let k: &DMatrix<f64> = &m.stiffness_si;
+    k.clone().lu().solve(&m.static_force_si).ok_or_else(|| {
         Error::config(
             "bearings",
             "stiffness",

@@ -7,6 +7,12 @@
 //! model is lateral (4 DOF per node) and uses rows/columns [0, 1, 3, 4];
 //! the axial entry is carried for completeness and for the axial model of
 //! the spindle, not used by the lateral matrices.
+//!
+//! Rotation signs (they matter for the force-tilt coupling terms): right-hand
+//! rule about the axes, so theta_y turns +z towards +x (theta_y = +du_x/dz)
+//! and theta_x turns +z towards -y (theta_x = -du_y/dz); the moment row of
+//! theta_x is M_x, of theta_y is M_y. A bearing model with another
+//! convention must flip the signs of its coupling terms before use.
 
 use std::fmt;
 use std::sync::Arc;

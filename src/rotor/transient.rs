@@ -90,9 +90,9 @@ pub struct TimeHistory {
     pub velocity_x_m_per_s: Vec<f64>,
     pub velocity_y_m_per_s: Vec<f64>,
     /// Physical displacement vector at the end [m, rad].
-    pub final_displacement: DVector<f64>,
+    pub final_displacement_si: DVector<f64>,
     /// Physical velocity vector at the end [m/s, rad/s].
-    pub final_velocity: DVector<f64>,
+    pub final_velocity_si: DVector<f64>,
     /// Newton iterations used in total.
     pub iterations: usize,
 }
@@ -109,11 +109,11 @@ impl TimeHistory {
 
 /// Linear part of the model in the integration coordinates.
 struct Linear {
-    mass: DMatrix<f64>,
-    damping: DMatrix<f64>,
-    stiffness: DMatrix<f64>,
+    mass_si: DMatrix<f64>,
+    damping_si: DMatrix<f64>,
+    stiffness_si: DMatrix<f64>,
     /// Constant force.
-    static_force: DVector<f64>,
+    static_force_si: DVector<f64>,
     /// Unbalance force f(t) = cos_part cos(Wt) + sin_part sin(Wt).
     cos_part: DVector<f64>,
     sin_part: DVector<f64>,
@@ -139,7 +139,7 @@ impl Linear {
 
     fn external(&self, t: f64) -> DVector<f64> {
         let (s, c) = (self.spin_rad_s * t).sin_cos();
-        &self.static_force + &self.cos_part * c + &self.sin_part * s
+        &self.static_force_si + &self.cos_part * c + &self.sin_part * s
     }
 }
 
@@ -216,7 +216,9 @@ fn effective_matrix(
     jq: &DMatrix<f64>,
     jv: &DMatrix<f64>,
 ) -> Result<nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>> {
-    let s = &lin.stiffness - jq + (&lin.damping - jv) * (GAMMA / (BETA * dt)) + &lin.mass * (1.0 / (BETA * dt * dt));
+    let s = &lin.stiffness_si - jq
+        + (&lin.damping_si - jv) * (GAMMA / (BETA * dt))
+        + &lin.mass_si * (1.0 / (BETA * dt * dt));
     let lu = s.lu();
     if !lu.is_invertible() {
         return Err(Error::config(
@@ -255,10 +257,10 @@ pub fn time_response(
         None => sys.clone(),
     };
     let lin = Linear {
-        damping: reduced.damping_and_gyroscopic(),
-        mass: reduced.mass,
-        stiffness: reduced.stiffness,
-        static_force: reduced.static_force,
+        damping_si: reduced.damping_and_gyroscopic(),
+        mass_si: reduced.mass_si,
+        stiffness_si: reduced.stiffness_si,
+        static_force_si: reduced.static_force_si,
         cos_part: DVector::zeros(0),
         sin_part: DVector::zeros(0),
         spin_rad_s: w,
@@ -269,7 +271,7 @@ pub fn time_response(
         sin_part: lin.to_generalized(&sin_phys),
         ..lin
     };
-    let r = lin.mass.nrows();
+    let r = lin.mass_si.nrows();
 
     // Initial state in integration coordinates (mass-orthogonal projection
     // for the reduced model: xi = Phi^T M q).
@@ -284,19 +286,19 @@ pub fn time_response(
                 ));
             }
             match &lin.basis {
-                Some(b) => (b.transpose() * (&sys.mass * q0), b.transpose() * (&sys.mass * v0)),
+                Some(b) => (b.transpose() * (&sys.mass_si * q0), b.transpose() * (&sys.mass_si * v0)),
                 None => (q0.clone(), v0.clone()),
             }
         }
     };
     let mass_chol = lin
-        .mass
+        .mass_si
         .clone()
         .cholesky()
         .ok_or_else(|| Error::config("mass", "matrix", "not positive definite"))?;
     let f0 = lin.external(0.0) + nonlinear_generalized(&lin, nonlinear, n_phys, 0.0, &xi, &v)?
-        - &lin.damping * &v
-        - &lin.stiffness * &xi;
+        - &lin.damping_si * &v
+        - &lin.stiffness_si * &xi;
     let mut a = mass_chol.solve(&f0);
 
     let dt = options.time_step_s;
@@ -319,8 +321,8 @@ pub fn time_response(
         displacement_y_m: Vec::with_capacity(steps + 1),
         velocity_x_m_per_s: Vec::with_capacity(steps + 1),
         velocity_y_m_per_s: Vec::with_capacity(steps + 1),
-        final_displacement: DVector::zeros(0),
-        final_velocity: DVector::zeros(0),
+        final_displacement_si: DVector::zeros(0),
+        final_velocity_si: DVector::zeros(0),
         iterations: 0,
     };
     let record = |h: &mut TimeHistory, t: f64, xi: &DVector<f64>, v: &DVector<f64>| {
@@ -353,7 +355,7 @@ pub fn time_response(
             let a1 = (&x1 - &xi) * c1 - &v * c2 - &a * c3;
             let v1 = &v + (&a * (1.0 - GAMMA) + &a1 * GAMMA) * dt;
             let fnl = nonlinear_generalized(&lin, nonlinear, n_phys, t1, &x1, &v1)?;
-            let res = &f_ext + fnl - &lin.mass * &a1 - &lin.damping * &v1 - &lin.stiffness * &x1;
+            let res = &f_ext + fnl - &lin.mass_si * &a1 - &lin.damping_si * &v1 - &lin.stiffness_si * &x1;
             let dx = lu
                 .solve(&res)
                 .ok_or_else(|| Error::convergence("Newmark step", step, f64::NAN, 0.0))?;
@@ -409,14 +411,14 @@ pub fn time_response(
             ));
         }
     }
-    hist.final_displacement = lin.to_physical(&xi);
-    hist.final_velocity = lin.to_physical(&v);
+    hist.final_displacement_si = lin.to_physical(&xi);
+    hist.final_velocity_si = lin.to_physical(&v);
     Ok(hist)
 }
 
 /// Mechanical energy 1/2 q'^T M q' + 1/2 q^T K q of a physical state [J].
 pub fn mechanical_energy_j(sys: &SystemMatrices, q: &DVector<f64>, qd: &DVector<f64>) -> f64 {
-    0.5 * qd.dot(&(&sys.mass * qd)) + 0.5 * q.dot(&(&sys.stiffness * q))
+    0.5 * qd.dot(&(&sys.mass_si * qd)) + 0.5 * q.dot(&(&sys.stiffness_si * q))
 }
 
 /// Velocity RMS, peak and the 1X/2X/3X amplitudes of the probe's x velocity
