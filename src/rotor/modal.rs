@@ -181,6 +181,15 @@ pub fn modes_at(
     options: &CampbellOptions,
 ) -> Result<Vec<Mode>> {
     finite("speed_rpm", speed_rpm)?;
+    if let Some(phi) = basis {
+        if phi.nrows() != rotor.dof_count() || phi.ncols() == 0 {
+            return Err(Error::config(
+                "basis",
+                format!("{}x{}", phi.nrows(), phi.ncols()),
+                format!("needs {} rows and at least one column", rotor.dof_count()),
+            ));
+        }
+    }
     let full = rotor.matrices(speed_rpm)?;
     let sys = match basis {
         Some(phi) => full.reduce(phi),

@@ -104,6 +104,13 @@ pub fn amplitude_spectrum(signal: &[f64], sample_rate_hz: f64) -> Result<(Vec<f6
 pub fn harmonic_amplitude(signal: &[f64], sample_rate_hz: f64, frequency_hz: f64) -> Result<f64> {
     positive("sample_rate_hz", sample_rate_hz)?;
     positive("frequency_hz", frequency_hz)?;
+    if frequency_hz >= 0.5 * sample_rate_hz {
+        return Err(Error::config(
+            "frequency_hz",
+            frequency_hz,
+            format!("must lie below the Nyquist frequency {} Hz", 0.5 * sample_rate_hz),
+        ));
+    }
     if signal.len() < 2 {
         return Err(Error::config(
             "signal_length",
@@ -182,5 +189,6 @@ mod tests {
         assert!(amp[k] > 3.0 * 0.849 && amp[k] <= 3.0 * 1.001);
         assert!((rms(&sig) - (0.5 * (9.0 + 1.0 + 0.25_f64)).sqrt()).abs() < 1e-2);
         assert!((peak(&[1.0, -4.0, 2.0]) - 4.0).abs() < 1e-15);
+        assert!(harmonic_amplitude(&sig, fs, 6_000.0).is_err());
     }
 }
