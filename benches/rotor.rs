@@ -79,6 +79,13 @@ fn rotor_benches(c: &mut Criterion) {
     g.bench_function("time_response_1s_hertzian_callback_reduced24", |b| {
         b.iter(|| time_response(black_box(&rotor), &unbalance, Some(&nl), None, &t_opts).unwrap())
     });
+    let full_opts = TransientOptions {
+        reduced_modes: None,
+        ..t_opts.clone()
+    };
+    g.bench_function("time_response_1s_hertzian_callback_full100dof", |b| {
+        b.iter(|| time_response(black_box(&rotor), &unbalance, Some(&nl), None, &full_opts).unwrap())
+    });
     g.finish();
 }
 

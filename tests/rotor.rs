@@ -315,9 +315,14 @@ fn nonlinear_callback_with_linear_law_reproduces_linear_bearings() {
     }
     // A hardening cubic term (k3 u^2 / k1 ~ 1e-2 at u ~ 1e-7 m) converges and
     // changes the motion by a small, non-zero amount.
-    let hard = CubicBearings {
-        cubic_n_per_m3: 1e20,
-        ..cb
+    let hard = thermobear::rotor::transient::ForceFn {
+        dofs: cb.dofs.clone(),
+        force: |_t: f64, q: &DVector<f64>, _v: &DVector<f64>, f: &mut DVector<f64>| -> Result<()> {
+            for &d in &cb.dofs {
+                f[d] -= 1e8 * q[d] + 1e20 * q[d].powi(3);
+            }
+            Ok(())
+        },
     };
     let h = time_response(&r, &u, Some(&hard), None, &opts).unwrap();
     let diff = h

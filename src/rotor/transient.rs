@@ -32,6 +32,26 @@ pub trait NonlinearForce: Sync {
     fn dofs(&self) -> Vec<usize>;
 }
 
+/// A closure `f(time_s, q, q', force)` (adding into `force`) acting on the
+/// listed physical DOFs, as a [`NonlinearForce`].
+pub struct ForceFn<F> {
+    pub dofs: Vec<usize>,
+    pub force: F,
+}
+
+impl<F> NonlinearForce for ForceFn<F>
+where
+    F: Fn(f64, &DVector<f64>, &DVector<f64>, &mut DVector<f64>) -> Result<()> + Sync,
+{
+    fn add_force(&self, time_s: f64, q: &DVector<f64>, qd: &DVector<f64>, force: &mut DVector<f64>) -> Result<()> {
+        (self.force)(time_s, q, qd, force)
+    }
+
+    fn dofs(&self) -> Vec<usize> {
+        self.dofs.clone()
+    }
+}
+
 /// Options of a time response.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TransientOptions {
