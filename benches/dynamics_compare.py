@@ -10,6 +10,7 @@ defaults of HelicalPairParams::seed_a().
 
 Usage: python3 benches/dynamics_compare.py [--rust-steps N]
 """
+
 import math
 import subprocess
 import sys
@@ -31,7 +32,10 @@ def seed_a():
     beta = math.radians(31.2)
     alpha_t = math.atan(math.tan(math.radians(16.5)) / math.cos(beta))
     mn = 1.537e-3
-    rb = lambda z: z * mn / (2 * math.cos(beta)) * math.cos(alpha_t)
+
+    def rb(z):
+        return z * mn / (2 * math.cos(beta)) * math.cos(alpha_t)
+
     rp, rg = rb(29), rb(78)
     mp, mg, ip, ig = 1.201, 3.1, 1.152e-4, 1.6e-3
     kr, ka, zb = 2.0e8, 5.0e7, 0.02
