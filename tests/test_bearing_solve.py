@@ -160,3 +160,24 @@ def test_free_tilt_carries_a_moment(b6208):
     s = b6208.solve(axial_n=2000.0, moment_nmm=20000.0, misalignment_rad=None)
     assert s.tilt_rad > 0
     assert s.applied_load[4] == pytest.approx(20.0, rel=1e-6)  # N m about y
+
+
+def test_forward_map_balances_the_solved_state(b6208):
+    """ring_forces at the solved displacement returns minus the applied load,
+    and its tangent stiffness matches central finite differences."""
+    s = b6208.solve(**SEED_A, speed_rpm=12000.0)
+    q = s.displacement
+    f, k = b6208.ring_forces(q, 12000.0)
+    np.testing.assert_allclose(f[:3], -s.applied_load[:3], rtol=1e-6, atol=1e-6)
+    for j, h in ((0, 1e-8), (2, 1e-8)):
+        qp, qm = q.copy(), q.copy()
+        qp[j] += h
+        qm[j] -= h
+        fd = -(b6208.ring_forces(qp, 12000.0)[0] - b6208.ring_forces(qm, 12000.0)[0]) / (2 * h)
+        np.testing.assert_allclose(k[:3, j], fd[:3], rtol=1e-4, atol=1e-3 * np.abs(k[j, j]))
+
+
+def test_python_example_runs():
+    ex = Path(__file__).resolve().parents[1] / "examples" / "quickstart.py"
+    r = subprocess.run([sys.executable, str(ex)], capture_output=True, text=True, check=True)
+    assert "radial stiffness" in r.stdout

@@ -107,6 +107,13 @@ class Bearing:
         raceway_control: str = "outer",
         misalignment_rad: Optional[float] = 0.0,
     ) -> dict: ...
+    def ring_forces(
+        self,
+        displacement: Sequence[float],
+        speed_rpm: float,
+        effects: Optional[Sequence[str]] = None,
+        raceway_control: str = "outer",
+    ) -> dict: ...
 
 def effects() -> list[tuple[str, str]]: ...
 def check_config(text: str) -> list[str]: ...

@@ -334,6 +334,19 @@ impl PyBearing {
         )
     }
 
+    /// Forces of the balls on the inner ring at a prescribed displacement.
+    #[pyo3(signature = (displacement, speed_rpm, effects=None, raceway_control="outer"))]
+    fn ring_forces<'py>(
+        &self,
+        py: Python<'py>,
+        displacement: [f64; 5],
+        speed_rpm: f64,
+        effects: Option<Vec<String>>,
+        raceway_control: &str,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        super::solve::ring_forces_point(py, &self.inner, displacement, speed_rpm, effects, raceway_control)
+    }
+
     fn __repr__(&self) -> String {
         format!(
             "Bearing({:?}, {}, {})",
