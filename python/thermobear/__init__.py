@@ -12,6 +12,16 @@ from __future__ import annotations
 from . import _native
 from .bearing import Bearing, BearingSolution, Material, stiffness_curve
 from .config import load_config, seed_config, seed_config_names
+from .gear import (
+    GearPair,
+    GearSystem,
+    bifurcation,
+    bifurcation_set,
+    gear_defaults,
+    largest_lyapunov,
+    regime_map,
+    regimes,
+)
 from .errors import (
     ConfigError,
     ConvergenceError,
@@ -39,12 +49,20 @@ __all__ = [
     "ConfigError",
     "ConvergenceError",
     "DataError",
+    "GearPair",
+    "GearSystem",
     "Material",
     "ThermalRunawayError",
     "ThermobearError",
+    "bifurcation",
+    "bifurcation_set",
     "effects",
+    "gear_defaults",
+    "largest_lyapunov",
     "load_config",
     "plot",
+    "regime_map",
+    "regimes",
     "seed_config",
     "seed_config_names",
     "stiffness_curve",
