@@ -12,6 +12,13 @@ from __future__ import annotations
 from . import _native
 from .bearing import Bearing, BearingSolution, Material, stiffness_curve
 from .config import load_config, seed_config, seed_config_names
+from .errors import (
+    ConfigError,
+    ConvergenceError,
+    DataError,
+    ThermalRunawayError,
+    ThermobearError,
+)
 from .gear import (
     GearPair,
     GearSystem,
@@ -21,13 +28,6 @@ from .gear import (
     largest_lyapunov,
     regime_map,
     regimes,
-)
-from .errors import (
-    ConfigError,
-    ConvergenceError,
-    DataError,
-    ThermalRunawayError,
-    ThermobearError,
 )
 
 __version__: str = _native.__version__

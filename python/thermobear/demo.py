@@ -150,7 +150,6 @@ STUDIES: list[tuple[str, Callable[[Path, bool], list[Path]]]] = [
 ]
 
 
-
 def run_demo(out: Path, quick: bool = False) -> Path:
     """Run every study into ``out`` and return it."""
     out.mkdir(parents=True, exist_ok=True)

@@ -84,6 +84,8 @@ class GearPair:
         polar_inertia_t_mm2: Sequence[float],
         input_torque_nm: float,
         profile_shift_coeff: Sequence[float] = (0.0, 0.0),
+        addendum_coeff: float = 1.0,
+        dedendum_coeff: float = 1.25,
     ) -> "GearPair":
         return cls(
             _native.GearPair.from_table(
@@ -100,6 +102,8 @@ class GearPair:
                 (float(polar_inertia_t_mm2[0]), float(polar_inertia_t_mm2[1])),
                 float(input_torque_nm),
                 (float(profile_shift_coeff[0]), float(profile_shift_coeff[1])),
+                float(addendum_coeff),
+                float(dedendum_coeff),
             )
         )
 
@@ -148,7 +152,12 @@ class GearPair:
                 "likely_intended": [float(r["likely_intended"]) for r in rows],
                 "reason": [r["reason"] for r in rows],
             },
-            schema={"field": pl.Utf8, "given": pl.Float64, "likely_intended": pl.Float64, "reason": pl.Utf8},
+            schema={
+                "field": pl.Utf8,
+                "given": pl.Float64,
+                "likely_intended": pl.Float64,
+                "reason": pl.Utf8,
+            },
         )
 
     def mesh_frequency_hz(self, speed_rpm: float) -> float:
@@ -240,7 +249,8 @@ class GearSystem:
         torque = float(gear.geometry["input_torque_nm"] if torque_nm is None else torque_nm)
         fa, fr = _native.seed_gear_bearing_loads(torque)
         grid = np.asarray(
-            STIFFNESS_SPEEDS_RPM if stiffness_speeds_rpm is None else stiffness_speeds_rpm, dtype=float
+            STIFFNESS_SPEEDS_RPM if stiffness_speeds_rpm is None else stiffness_speeds_rpm,
+            dtype=float,
         )
         if isinstance(stiffness, str):
             if stiffness in ("constant", "speed"):
@@ -320,14 +330,22 @@ class GearSystem:
         self, speed_rpm: float = 10_000.0, mesh_stiffness_n_per_m: Optional[float] = None
     ) -> np.ndarray:
         """Linear stiffness matrix in contact (default: mean mesh stiffness)."""
-        k = self.params["mesh_stiffness_mean_n_per_m"] if mesh_stiffness_n_per_m is None else mesh_stiffness_n_per_m
+        k = (
+            self.params["mesh_stiffness_mean_n_per_m"]
+            if mesh_stiffness_n_per_m is None
+            else mesh_stiffness_n_per_m
+        )
         return np.asarray(self._s.stiffness_matrix(float(speed_rpm), float(k)))
 
     def natural_frequencies_hz(
         self, speed_rpm: float = 10_000.0, mesh_stiffness_n_per_m: Optional[float] = None
     ) -> np.ndarray:
         """Undamped natural frequencies in contact, ascending [Hz]."""
-        k = self.params["mesh_stiffness_mean_n_per_m"] if mesh_stiffness_n_per_m is None else mesh_stiffness_n_per_m
+        k = (
+            self.params["mesh_stiffness_mean_n_per_m"]
+            if mesh_stiffness_n_per_m is None
+            else mesh_stiffness_n_per_m
+        )
         return np.asarray(self._s.natural_frequencies_hz(float(speed_rpm), float(k)))
 
     def projection(self) -> np.ndarray:
@@ -368,7 +386,9 @@ def _check_system(system: Any) -> None:
         raise _config_error(f"invalid system = {system!r}: must be a thermobear.GearSystem")
 
 
-def _points_frame(cols: Mapping[str, Any], direction: str, case: Optional[str]) -> "polars.DataFrame":  # noqa: F821
+def _points_frame(
+    cols: Mapping[str, Any], direction: str, case: Optional[str]
+) -> "polars.DataFrame":  # noqa: F821
     import polars as pl
 
     counts = np.asarray(cols["poincare_count"])
@@ -476,7 +496,11 @@ def _per_speed_from_points(pts: Any, rel_tol: float = 1e-3, max_period: int = 16
                 break
         rows.append((speed, f"period-{period}" if period else "non-periodic", period))
     return pl.DataFrame(
-        {"speed_rpm": [r[0] for r in rows], "regime": [r[1] for r in rows], "period": [r[2] for r in rows]}
+        {
+            "speed_rpm": [r[0] for r in rows],
+            "regime": [r[1] for r in rows],
+            "period": [r[2] for r in rows],
+        }
     )
 
 
@@ -495,7 +519,9 @@ def regimes(pts: Any) -> "polars.DataFrame":  # noqa: F821
         cols = ["speed_rpm", "regime"] + [
             c for c in ("period", "impact", "jump_after") if c in pts.columns
         ]
-        per = pts.select(keys + cols).unique(subset=keys + ["speed_rpm"], keep="first", maintain_order=True)
+        per = pts.select(keys + cols).unique(
+            subset=keys + ["speed_rpm"], keep="first", maintain_order=True
+        )
     else:
         if "dte_um" not in pts.columns:
             raise _config_error("invalid pts = frame without 'regime' or 'dte_um'")
@@ -573,7 +599,9 @@ def regime_map(
         int(lyapunov_periods),
         progress,
     )
-    df = pl.DataFrame({k: (np.asarray(v) if not isinstance(v, list) else v) for k, v in cols.items()})
+    df = pl.DataFrame(
+        {k: (np.asarray(v) if not isinstance(v, list) else v) for k, v in cols.items()}
+    )
     te = system.params["te_amplitude_um"]
     return df.with_columns((pl.col("te_scale") * te).alias("te_amplitude_um"))
 
@@ -606,6 +634,10 @@ def largest_lyapunov(
         raise _config_error("invalid speed_rpm = None: a gear system needs a speed")
     return float(
         _native.largest_lyapunov_gear(
-            system_or_name._s, float(speed_rpm), int(periods), int(transient_periods), int(steps_per_period)
+            system_or_name._s,
+            float(speed_rpm),
+            int(periods),
+            int(transient_periods),
+            int(steps_per_period),
         )
     )

@@ -178,10 +178,14 @@ def study_seed_a_gear(out: Path, quick: bool = False, progress: Optional[Any] = 
         )
 
     # Bifurcation diagrams: seed operating point and a light one.
-    pts = tbg.bifurcation_set(seed, speeds, ("up", "down"), transient, record, 64, progress=progress)
+    pts = tbg.bifurcation_set(
+        seed, speeds, ("up", "down"), transient, record, 64, progress=progress
+    )
     files += write_table(pts, out, "poincare_seed_100nm")
     files += _diagrams(pts, out, "bifurcation_seed_100nm", "seed A, 100 N m")
-    pts_l = tbg.bifurcation_set(light, speeds, ("up", "down"), transient, record, 64, progress=progress)
+    pts_l = tbg.bifurcation_set(
+        light, speeds, ("up", "down"), transient, record, 64, progress=progress
+    )
     files += write_table(pts_l, out, "poincare_light")
     files += _diagrams(
         pts_l, out, "bifurcation_light", f"{LIGHT_TORQUE_NM:.0f} N m, TE {LIGHT_TE_UM:.0f} um"
@@ -195,11 +199,17 @@ def study_seed_a_gear(out: Path, quick: bool = False, progress: Optional[Any] = 
         ]
     )
     files += write_table(reg, out, "regimes")
-    files += write_table(_comparison(_per_speed(pts), _per_speed(pts_l), step), out, "regimes_vs_paper")
+    files += write_table(
+        _comparison(_per_speed(pts), _per_speed(pts_l), step), out, "regimes_vs_paper"
+    )
 
     # Regime map: torque x speed x TE amplitude (constant bearing stiffness).
     if quick:
-        torques, scales, map_speeds = [10.0, 30.0, 100.0], [1.0, 5.0], np.linspace(*SPEED_RANGE_RPM, 11)
+        torques, scales, map_speeds = (
+            [10.0, 30.0, 100.0],
+            [1.0, 5.0],
+            np.linspace(*SPEED_RANGE_RPM, 11),
+        )
     else:
         torques = [5.0, 10.0, 20.0, 30.0, 50.0, 75.0, 100.0, 150.0]
         scales = [1.0, 2.5, 5.0]
@@ -220,7 +230,10 @@ def study_seed_a_gear(out: Path, quick: bool = False, progress: Optional[Any] = 
         .agg(
             (pl.col("regime") == "period-1").mean().alias("period_1_fraction"),
             (pl.col("impact") == "no-impact").mean().alias("no_impact_fraction"),
-            pl.col("speed_rpm").filter(pl.col("regime") == "chaotic").min().alias("first_chaos_rpm"),
+            pl.col("speed_rpm")
+            .filter(pl.col("regime") == "chaotic")
+            .min()
+            .alias("first_chaos_rpm"),
         )
         .sort("te_amplitude_um", "torque_nm")
     )

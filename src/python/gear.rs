@@ -133,7 +133,7 @@ impl PyGearPair {
     /// the table is checked for typos first and refused with the likely
     /// intended value named.
     #[staticmethod]
-    #[pyo3(signature = (pinion_teeth, gear_teeth, normal_module_mm, normal_pressure_angle_deg, helix_angle_deg, face_width_mm, youngs_modulus_mpa, poisson_ratio, density_t_per_mm3, mass_kg, polar_inertia_t_mm2, input_torque_nm, profile_shift_coeff=(0.0, 0.0)))]
+    #[pyo3(signature = (pinion_teeth, gear_teeth, normal_module_mm, normal_pressure_angle_deg, helix_angle_deg, face_width_mm, youngs_modulus_mpa, poisson_ratio, density_t_per_mm3, mass_kg, polar_inertia_t_mm2, input_torque_nm, profile_shift_coeff=(0.0, 0.0), addendum_coeff=1.0, dedendum_coeff=1.25))]
     #[allow(clippy::too_many_arguments)]
     fn from_table(
         pinion_teeth: u32,
@@ -149,11 +149,19 @@ impl PyGearPair {
         polar_inertia_t_mm2: (f64, f64),
         input_torque_nm: f64,
         profile_shift_coeff: (f64, f64),
+        addendum_coeff: f64,
+        dedendum_coeff: f64,
     ) -> PyResult<Self> {
         positive("normal_module_mm", normal_module_mm).py_err()?;
+        positive("pinion_mass_kg", mass_kg.0).py_err()?;
+        positive("gear_mass_kg", mass_kg.1).py_err()?;
+        positive("pinion_polar_inertia_t_mm2", polar_inertia_t_mm2.0).py_err()?;
+        positive("gear_polar_inertia_t_mm2", polar_inertia_t_mm2.1).py_err()?;
+        positive("addendum_coeff", addendum_coeff).py_err()?;
+        positive("dedendum_coeff", dedendum_coeff).py_err()?;
         finite("helix_angle_deg", helix_angle_deg).py_err()?;
         let cos_b = helix_angle_deg.to_radians().cos();
-        let tip = |z: u32, x: f64| 0.5 * z as f64 * normal_module_mm / cos_b + normal_module_mm * (1.0 + x);
+        let tip = |z: u32, x: f64| 0.5 * z as f64 * normal_module_mm / cos_b + normal_module_mm * (addendum_coeff + x);
         let table = TableGearData {
             youngs_modulus_mpa,
             density_t_per_mm3,
@@ -183,8 +191,8 @@ impl PyGearPair {
             normal_pressure_angle_rad: normal_pressure_angle_deg.to_radians(),
             helix_angle_rad: helix_angle_deg.to_radians(),
             face_width_m: face_width_mm * 1e-3,
-            addendum_coeff: 1.0,
-            dedendum_coeff: 1.25,
+            addendum_coeff,
+            dedendum_coeff,
             youngs_modulus_pa: si.youngs_modulus_pa,
             poisson_ratio,
             density_kg_m3: si.density_kg_m3,
