@@ -307,3 +307,26 @@ def test_regime_map_and_set_columns(seed_system: tb.GearSystem, pair: tb.GearPai
     one = tb.bifurcation(sys2, speeds, "down", 50, 10, 64)
     sub = both.filter((pl.col("case") == "b") & (pl.col("direction") == "down")).drop("case")
     assert sub.equals(one)
+
+
+def test_quick_demo_study_writes_its_tables(tmp_path) -> None:
+    from thermobear.demo import STUDIES
+
+    fn = dict(STUDIES)["seed_a_gear"]
+    files = fn(tmp_path, True)
+    names = {f.name for f in files}
+    for stem in (
+        "gear_defaults",
+        "regimes",
+        "regimes_vs_paper",
+        "regime_map",
+        "poincare_seed_100nm",
+    ):
+        assert f"{stem}.parquet" in names and f"{stem}.csv" in names
+    assert sum(n.startswith("bifurcation_seed_100nm_") for n in names) >= 4
+    reg = pl.read_parquet(tmp_path / "regimes.parquet")
+    seed = reg.filter(pl.col("torque_nm") == 100.0)
+    # The seed operating point: period-1 without impacts everywhere.
+    assert set(seed["regime"]) == {"period-1"} and set(seed["impact"]) == {"no-impact"}
+    d = pl.read_parquet(tmp_path / "gear_defaults.parquet")
+    assert d.filter(pl.col("parameter") == "backlash_um")["value"][0] == pytest.approx(100.0)
