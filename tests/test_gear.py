@@ -330,3 +330,19 @@ def test_quick_demo_study_writes_its_tables(tmp_path) -> None:
     assert set(seed["regime"]) == {"period-1"} and set(seed["impact"]) == {"no-impact"}
     d = pl.read_parquet(tmp_path / "gear_defaults.parquet")
     assert d.filter(pl.col("parameter") == "backlash_um")["value"][0] == pytest.approx(100.0)
+
+
+def test_ctrl_c_interrupts_a_long_sweep(seed_system: tb.GearSystem) -> None:
+    """SIGINT (simulated with _thread.interrupt_main) stops the GIL-released
+    sweep within a fraction of its run time and raises KeyboardInterrupt."""
+    import _thread
+    import threading
+    import time
+
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    timer.start()
+    t0 = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        tb.bifurcation(seed_system, np.linspace(6500.0, 16500.0, 5000), "up", 300, 100, 64)
+    timer.join()
+    assert time.perf_counter() - t0 < 10.0
