@@ -119,6 +119,59 @@ def _per_speed(pts: Any) -> Any:
     return pts.drop("dte_um").unique(subset=["case", "direction", "speed_rpm"], maintain_order=True)
 
 
+def _hysteresis(per_speed: Any, torque_nm: float) -> Any:
+    """Speed ranges where the accelerating and decelerating sweeps end on
+    different motions (regime or impact differ, or the peak-to-peak
+    dynamic TE differs by more than 20 %): coexisting solutions."""
+    import polars as pl
+
+    rows = []
+    for (case,), g in per_speed.group_by(["case"], maintain_order=True):
+        cols = ["speed_rpm", "regime", "impact", "dte_min_um", "dte_max_um"]
+        up = g.filter(pl.col("direction") == "up").select(cols)
+        down = g.filter(pl.col("direction") == "down").select(cols)
+        j = up.join(down, on="speed_rpm", suffix="_down").sort("speed_rpm")
+        pp_up = (j["dte_max_um"] - j["dte_min_um"]).to_numpy()
+        pp_dn = (j["dte_max_um_down"] - j["dte_min_um_down"]).to_numpy()
+        amp = abs(pp_up - pp_dn) > 0.2 * np.maximum(np.maximum(pp_up, pp_dn), 1e-9)
+        differ = (
+            (j["regime"] != j["regime_down"]).to_numpy()
+            | (j["impact"] != j["impact_down"]).to_numpy()
+            | amp
+        )
+        s = j["speed_rpm"].to_numpy()
+        i = 0
+        while i < len(s):
+            if not differ[i]:
+                i += 1
+                continue
+            k = i
+            while k + 1 < len(s) and differ[k + 1]:
+                k += 1
+            rows.append(
+                {
+                    "torque_nm": torque_nm,
+                    "case": case,
+                    "speed_from_rpm": float(s[i]),
+                    "speed_to_rpm": float(s[k]),
+                    "speeds": k - i + 1,
+                    "up_regimes": ", ".join(sorted(set(j["regime"][i : k + 1].to_list()))),
+                    "down_regimes": ", ".join(sorted(set(j["regime_down"][i : k + 1].to_list()))),
+                }
+            )
+            i = k + 1
+    schema = {
+        "torque_nm": pl.Float64,
+        "case": pl.Utf8,
+        "speed_from_rpm": pl.Float64,
+        "speed_to_rpm": pl.Float64,
+        "speeds": pl.Int64,
+        "up_regimes": pl.Utf8,
+        "down_regimes": pl.Utf8,
+    }
+    return pl.DataFrame(rows, schema=schema)
+
+
 def _diagrams(pts: Any, out: Path, stem: str, title: str) -> list[Path]:
     from . import plot
     from .demo import save_figure
@@ -199,9 +252,10 @@ def study_seed_a_gear(out: Path, quick: bool = False, progress: Optional[Any] = 
         ]
     )
     files += write_table(reg, out, "regimes")
-    files += write_table(
-        _comparison(_per_speed(pts), _per_speed(pts_l), step), out, "regimes_vs_paper"
-    )
+    per_seed, per_light = _per_speed(pts), _per_speed(pts_l)
+    files += write_table(_comparison(per_seed, per_light, step), out, "regimes_vs_paper")
+    hyst = pl.concat([_hysteresis(per_seed, 100.0), _hysteresis(per_light, LIGHT_TORQUE_NM)])
+    files += write_table(hyst, out, "hysteresis")
 
     # Regime map: torque x speed x TE amplitude (constant bearing stiffness).
     if quick:
