@@ -19,6 +19,16 @@ from .errors import (
     ThermalRunawayError,
     ThermobearError,
 )
+from .gear import (
+    GearPair,
+    GearSystem,
+    bifurcation,
+    bifurcation_set,
+    gear_defaults,
+    largest_lyapunov,
+    regime_map,
+    regimes,
+)
 
 __version__: str = _native.__version__
 
@@ -39,12 +49,20 @@ __all__ = [
     "ConfigError",
     "ConvergenceError",
     "DataError",
+    "GearPair",
+    "GearSystem",
     "Material",
     "ThermalRunawayError",
     "ThermobearError",
+    "bifurcation",
+    "bifurcation_set",
     "effects",
+    "gear_defaults",
+    "largest_lyapunov",
     "load_config",
     "plot",
+    "regime_map",
+    "regimes",
     "seed_config",
     "seed_config_names",
     "stiffness_curve",

@@ -5,6 +5,7 @@ use pyo3::prelude::*;
 
 pub mod bearing;
 pub mod errors;
+pub mod gear;
 pub mod parallel;
 pub mod solve;
 
@@ -13,6 +14,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
     bearing::register(m)?;
     solve::register(m)?;
+    gear::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
