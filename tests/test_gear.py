@@ -8,6 +8,7 @@ import re
 import numpy as np
 import polars as pl
 import pytest
+
 import thermobear as tb
 
 SEED = dict(
