@@ -13,6 +13,8 @@ pub mod modal;
 pub mod presets;
 pub mod response;
 pub mod spectrum;
+pub mod spindle_bearings;
+pub mod spindle_vibration;
 pub mod support;
 pub mod transient;
 
