@@ -19,6 +19,7 @@ from .errors import (
     ThermalRunawayError,
     ThermobearError,
 )
+from .rotor import campbell, critical_speeds, spectrum, spectrum_orders, vibration
 
 __version__: str = _native.__version__
 
@@ -34,6 +35,11 @@ def effects() -> "polars.DataFrame":  # noqa: F821
 from . import plot  # noqa: E402  (plot imports matplotlib lazily)
 
 __all__ = [
+    "campbell",
+    "critical_speeds",
+    "spectrum",
+    "spectrum_orders",
+    "vibration",
     "Bearing",
     "BearingSolution",
     "ConfigError",

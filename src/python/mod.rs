@@ -6,6 +6,7 @@ use pyo3::prelude::*;
 pub mod bearing;
 pub mod errors;
 pub mod parallel;
+pub mod rotor;
 pub mod solve;
 
 #[pymodule]
@@ -13,6 +14,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
     bearing::register(m)?;
     solve::register(m)?;
+    rotor::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
