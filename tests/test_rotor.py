@@ -99,3 +99,14 @@ def test_spectrum_peak_is_the_rotation_frequency_and_time_matches_frequency():
     )
     plain = tb.campbell("seed-ceramic-spindle", [0.0], modes=1)
     assert ump["frequency_hz"][0] < plain["frequency_hz"][0]
+
+
+def test_critical_speeds_lie_on_the_1x_line_with_forward_above_backward():
+    # A 1X critical speed is where a branch meets f = speed / 60; gyroscopic
+    # stiffening raises the forward branch, so its crossing comes later.
+    c = tb.critical_speeds("seed-ceramic-spindle", np.linspace(0.0, 120_000.0, 13), modes=2)
+    assert c.height >= 2
+    assert np.allclose(c["frequency_hz"].to_numpy(), c["speed_rpm"].to_numpy() / 60.0)
+    fwd = c.filter(c["whirl"] == "forward")["speed_rpm"].to_numpy()
+    bwd = c.filter(c["whirl"] == "backward")["speed_rpm"].to_numpy()
+    assert fwd.size and bwd.size and fwd.min() > bwd.min()

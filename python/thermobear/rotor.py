@@ -160,12 +160,14 @@ def critical_speeds(
 ) -> "polars.DataFrame":  # noqa: F821
     """Speeds where a Campbell branch crosses f = harmonic x speed / 60
     (linear interpolation on the speed grid). Columns ``speed_rpm,
-    frequency_hz, branch, whirl``. Default grid 0..60,000 rpm (121 speeds),
-    wide enough to reach the first forward critical of a stiff spindle."""
+    frequency_hz, branch, whirl``. Default grid 0..120,000 rpm (121
+    speeds): the seed spindle on its preloaded rows is stiff, its first
+    1X crossings lie above 60,000 rpm, far beyond its 30,000 rpm service
+    speed."""
     import polars as pl
 
     mat, preload, _ = _resolve(spindle)
-    s = _speeds(speeds_rpm, np.linspace(0.0, 60_000.0, 121))
+    s = _speeds(speeds_rpm, np.linspace(0.0, 120_000.0, 121))
     d = _native.rotor_critical_speeds(
         mat,
         preload,
