@@ -110,3 +110,20 @@ def test_critical_speeds_lie_on_the_1x_line_with_forward_above_backward():
     fwd = c.filter(c["whirl"] == "forward")["speed_rpm"].to_numpy()
     bwd = c.filter(c["whirl"] == "backward")["speed_rpm"].to_numpy()
     assert fwd.size and bwd.size and fwd.min() > bwd.min()
+
+
+def test_time_method_with_ball_forces_matches_frequency_method():
+    # The nonlinear time response (ball forces, cage turning) at G2.5 is a
+    # small-amplitude motion about the preloaded state: its 1X equals the
+    # linear steady response within 1 %, and its RMS is 1X / sqrt 2 when
+    # 2X and 3X are negligible. (Near 15,000 rpm the steel spindle's nose
+    # 1X passes a near-cancellation of its static and inertial parts, where
+    # relative differences are amplified: 1.4 % there; we test away from it.)
+    s = [9_000.0, 18_000.0]
+    t = tb.vibration("seed-steel-spindle", s, coupled=False, method="time", duration_s=0.04)
+    f = tb.vibration("seed-steel-spindle", s, coupled=False)
+    assert np.allclose(t["x1_mm_s"].to_numpy(), f["x1_mm_s"].to_numpy(), rtol=1e-2)
+    assert np.all(t["x2_mm_s"].to_numpy() < 1e-3 * t["x1_mm_s"].to_numpy())
+    assert np.allclose(
+        t["velocity_rms_mm_s"].to_numpy(), t["x1_mm_s"].to_numpy() / np.sqrt(2.0), rtol=2e-2
+    )
