@@ -76,6 +76,22 @@ def test_thermal_seam_changes_the_response_and_coupled_needs_offsets():
         tb.vibration("seed-steel-spindle", [1000.0], coupled=False, method="fourier")
     with pytest.raises(ConfigError, match="speeds_rpm"):
         tb.campbell("seed-steel-spindle", speeds_rpm=[float("nan")])
+    with pytest.raises(ConfigError, match="speed_rpm"):
+        tb.spectrum("seed-steel-spindle", speed_rpm=0.0, coupled=False)
+    with pytest.raises(ConfigError, match="preload_n"):
+        tb.campbell(type("S", (), {"rotor_preset_name": "seed-steel-spindle", "preload_n": -5.0})())
+    with pytest.raises(ConfigError, match="front"):
+        tb.vibration(
+            type(
+                "S",
+                (),
+                {
+                    "rotor_preset_name": "seed-steel-spindle",
+                    "raceway_offsets": lambda self, n: {"rear": (0, 0)},
+                },
+            )(),
+            [1e3],
+        )
     with pytest.raises(ConfigError, match="unbalance"):
         tb.vibration("seed-steel-spindle", [1000.0], False, unbalance_grade=2.5, unbalance_g_mm=1.0)
 
