@@ -13,6 +13,7 @@ use thermobear::rotor::presets::{
     REAR_BEARING_POSITIONS_M,
 };
 use thermobear::rotor::response::Unbalance;
+use thermobear::rotor::spindle_vibration::{RowMaterial, SpindleVibration, SpindleVibrationConfig, UnbalanceSpec};
 use thermobear::rotor::transient::{time_response, NonlinearForce, TransientOptions};
 use thermobear::rotor::{LateralDof, Rotor};
 use thermobear::Result;
@@ -85,6 +86,22 @@ fn rotor_benches(c: &mut Criterion) {
     };
     g.bench_function("time_response_1s_hertzian_callback_full100dof", |b| {
         b.iter(|| time_response(black_box(&rotor), &unbalance, Some(&nl), None, &full_opts).unwrap())
+    });
+
+    // The seed spindle on bearing-solver rows (src/rotor/spindle_vibration.rs):
+    // a fresh model per iteration, so the 400 row solves (2 row types x 200
+    // speeds) are timed together with the eigenproblems.
+    let cfg = SpindleVibrationConfig::seed(RowMaterial::Hybrid);
+    g.bench_function("campbell_seed_b_200_speeds_solver_rows", |b| {
+        b.iter(|| {
+            let s = SpindleVibration::new(black_box(cfg.clone())).unwrap();
+            s.campbell(&speeds, 8).unwrap()
+        })
+    });
+    let s = SpindleVibration::new(cfg.clone()).unwrap();
+    let u = s.unbalance(UnbalanceSpec::Grade { grade_mm_per_s: 2.5 }).unwrap();
+    g.bench_function("time_response_1s_nonlinear_ball_forces_18000rpm", |b| {
+        b.iter(|| s.time_vibration(18_000.0, 1.0, 0.0, black_box(&u), true).unwrap())
     });
     g.finish();
 }

@@ -27,11 +27,14 @@ pub enum Effect {
     ThermalExpansionHousing = 7,
     /// Lubricant viscosity evaluated at the operating temperature (ASTM D341).
     TemperatureDependentViscosity = 8,
+    /// Unbalanced magnetic pull of the eccentric motor rotor: negative
+    /// radial stiffness and static pull (src/rotor/magnetic_pull.rs).
+    UnbalancedMagneticPull = 9,
 }
 
 impl Effect {
     /// Every effect, in registry order.
-    pub const ALL: [Effect; 9] = [
+    pub const ALL: [Effect; 10] = [
         Effect::CentrifugalForce,
         Effect::GyroscopicMoment,
         Effect::RingCentrifugalExpansion,
@@ -41,6 +44,7 @@ impl Effect {
         Effect::ThermalExpansionBalls,
         Effect::ThermalExpansionHousing,
         Effect::TemperatureDependentViscosity,
+        Effect::UnbalancedMagneticPull,
     ];
 
     /// The public name.
@@ -55,6 +59,7 @@ impl Effect {
             Effect::ThermalExpansionBalls => "thermal_expansion_balls",
             Effect::ThermalExpansionHousing => "thermal_expansion_housing",
             Effect::TemperatureDependentViscosity => "temperature_dependent_viscosity",
+            Effect::UnbalancedMagneticPull => "unbalanced_magnetic_pull",
         }
     }
 
@@ -85,6 +90,9 @@ impl Effect {
             }
             Effect::TemperatureDependentViscosity => {
                 "oil viscosity at the operating temperature in the viscous friction moment (ASTM D341, A-21)"
+            }
+            Effect::UnbalancedMagneticPull => {
+                "unbalanced magnetic pull of the eccentric motor rotor in its air gap (negative stiffness, static pull)"
             }
         }
     }

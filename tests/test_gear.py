@@ -311,9 +311,9 @@ def test_regime_map_and_set_columns(seed_system: tb.GearSystem, pair: tb.GearPai
 
 
 def test_quick_demo_study_writes_its_tables(tmp_path) -> None:
-    from thermobear.demo import STUDIES
+    from thermobear.demo import STUDIES, study_function
 
-    fn = dict(STUDIES)["seed_a_gear"]
+    fn = study_function(dict(STUDIES)["seed_a_gear"])
     files = fn(tmp_path, True)
     names = {f.name for f in files}
     for stem in (

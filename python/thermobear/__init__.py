@@ -29,6 +29,7 @@ from .gear import (
     regime_map,
     regimes,
 )
+from .rotor import campbell, critical_speeds, spectrum, spectrum_orders, vibration
 
 __version__: str = _native.__version__
 
@@ -44,6 +45,11 @@ def effects() -> "polars.DataFrame":  # noqa: F821
 from . import plot  # noqa: E402  (plot imports matplotlib lazily)
 
 __all__ = [
+    "campbell",
+    "critical_speeds",
+    "spectrum",
+    "spectrum_orders",
+    "vibration",
     "Bearing",
     "BearingSolution",
     "ConfigError",

@@ -3,7 +3,7 @@
 SI inside; every argument name carries its unit. Arrays are float64 numpy.
 """
 
-from typing import Callable, Optional, Sequence
+from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 import numpy.typing as npt
@@ -252,3 +252,45 @@ def gear_bearing_schedule(
 ) -> tuple[list[float], list[float], list[float]]: ...
 def seed_gear_bearing_loads(torque_nm: float) -> tuple[float, float]: ...
 def gear_defaults() -> dict[str, float]: ...
+def rotor_campbell(
+    row_material: str,
+    preload_n: float,
+    speeds_rpm: npt.NDArray[np.float64],
+    modes: int = 8,
+    effects: Optional[Sequence[str]] = None,
+    offsets: Optional[dict[str, list[float]]] = None,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> dict[str, Any]: ...
+def rotor_critical_speeds(
+    row_material: str,
+    preload_n: float,
+    speeds_rpm: npt.NDArray[np.float64],
+    modes: int = 8,
+    harmonic: float = 1.0,
+    effects: Optional[Sequence[str]] = None,
+    offsets: Optional[dict[str, list[float]]] = None,
+) -> dict[str, Any]: ...
+def rotor_vibration(
+    row_material: str,
+    preload_n: float,
+    speeds_rpm: npt.NDArray[np.float64],
+    unbalance_grade: Optional[float] = None,
+    unbalance_g_mm: Optional[float] = None,
+    method: str = "frequency",
+    duration_s: float = 0.1,
+    effects: Optional[Sequence[str]] = None,
+    offsets: Optional[dict[str, list[float]]] = None,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> dict[str, Any]: ...
+def rotor_spectrum(
+    row_material: str,
+    preload_n: float,
+    speed_rpm: float,
+    duration_s: float = 0.2,
+    nonlinear: bool = True,
+    unbalance_grade: Optional[float] = None,
+    unbalance_g_mm: Optional[float] = None,
+    effects: Optional[Sequence[str]] = None,
+    offsets: Optional[dict[str, list[float]]] = None,
+) -> dict[str, Any]: ...
+def rotor_default_effects() -> list[str]: ...

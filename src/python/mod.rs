@@ -7,6 +7,7 @@ pub mod bearing;
 pub mod errors;
 pub mod gear;
 pub mod parallel;
+pub mod rotor;
 pub mod solve;
 
 #[pymodule]
@@ -15,6 +16,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     bearing::register(m)?;
     solve::register(m)?;
     gear::register(m)?;
+    rotor::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -3,6 +3,11 @@
 //! diagram and critical speeds, unbalance response (frequency and time
 //! domain), vibration velocity and spectra.
 //!
+//! [`spindle_bearings`] builds the supports from the bearing solver
+//! (preloaded angular-contact rows, linearised or as nonlinear ball forces,
+//! with the thermal raceway-offset seam); [`spindle_vibration`] applies them
+//! to the seed B spindle.
+//!
 //! Equations of motion (Friswell et al. 2010, eq. 5.125 form):
 //! `M q'' + (C + Omega G) q' + K(Omega) q = f(t)`, q = [x, y, theta_x, theta_y]
 //! per node (see [`beam`] for the sign convention).
@@ -13,6 +18,8 @@ pub mod modal;
 pub mod presets;
 pub mod response;
 pub mod spectrum;
+pub mod spindle_bearings;
+pub mod spindle_vibration;
 pub mod support;
 pub mod transient;
 
