@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 import thermobear as tb
 from thermobear.errors import ConfigError
 
