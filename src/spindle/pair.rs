@@ -36,7 +36,9 @@
 //!   k_s -> 0 gives a constant force F0; k_s -> infinity pins x = 0, the
 //!   rigid pair with interference c0 + u.
 
-use crate::bearing::{BearingModel, BearingState, RacewayOffsets, SolveOptions, Tilt, WarmStart};
+#![allow(clippy::needless_range_loop)] // 5x5 index algebra reads clearer with indices
+
+use crate::bearing::{BearingModel, BearingState, RacewayOffsets, RingForces, SolveOptions, Tilt, WarmStart};
 use crate::error::{finite, non_negative, positive, Error, Result};
 
 /// How the pair is preloaded.
@@ -111,6 +113,24 @@ pub struct BearingPair {
     /// assembly under the preload force, zero speed).
     pub interference_m: f64,
     pub options: SolveOptions,
+}
+
+/// Residual, Jacobian, pair stiffness, axial forces and ring forces at one point.
+struct Residual {
+    r: [f64; 6],
+    jac: [[f64; 6]; 6],
+    kpair: [[f64; 5]; 5],
+    axial: [f64; 2],
+    forces: Vec<RingForces>,
+}
+
+/// Warm start of a pair solve: shaft displacement, spring compression and
+/// the per-ball solutions of both bearings.
+#[derive(Debug, Clone, Default)]
+pub struct PairWarm {
+    pub displacement_m_rad: [f64; 5],
+    pub spring_compression_m: f64,
+    balls: [WarmStart; 2],
 }
 
 /// Local coordinates of bearing k (0 = A, 1 = B) as the rows of T_k.
@@ -220,12 +240,13 @@ impl BearingPair {
         speed_rpm: f64,
         load: &PairLoad,
         warm: &mut [WarmStart; 2],
-    ) -> Result<([f64; 6], [[f64; 6]; 6], [[f64; 5]; 5], [f64; 2])> {
+    ) -> Result<Residual> {
         let q = self.local_q(u, x, load);
         let mut r = [0.0; 6];
         let mut jac = [[0.0; 6]; 6];
         let mut kpair = [[0.0; 5]; 5];
         let mut axial = [0.0; 2];
+        let mut forces = Vec::with_capacity(2);
         r[..5].copy_from_slice(&load.load_n_nm);
         for k in 0..2 {
             let model = if k == 0 { &self.model_a } else { &self.model_b };
@@ -273,11 +294,18 @@ impl BearingPair {
                 }
                 jac[5][5] = -f.stiffness_matrix_si[2][2] - ks;
             }
+            forces.push(f);
         }
         if self.spring_rate().is_none() {
             jac[5][5] = 1.0;
         }
-        Ok((r, jac, kpair, axial))
+        Ok(Residual {
+            r,
+            jac,
+            kpair,
+            axial,
+            forces,
+        })
     }
 
     /// Solve the shaft equilibrium at `speed_rpm`.
@@ -287,6 +315,17 @@ impl BearingPair {
 
     /// Solve from a start displacement and spring compression.
     pub fn solve_from(&self, speed_rpm: f64, load: &PairLoad, start_u: [f64; 5], start_x: f64) -> Result<PairState> {
+        let mut w = PairWarm {
+            displacement_m_rad: start_u,
+            spring_compression_m: start_x,
+            ..Default::default()
+        };
+        self.solve_warm(speed_rpm, load, &mut w)
+    }
+
+    /// Solve starting from (and updating) a warm start.
+    pub fn solve_warm(&self, speed_rpm: f64, load: &PairLoad, pw: &mut PairWarm) -> Result<PairState> {
+        let (start_u, start_x) = (pw.displacement_m_rad, pw.spring_compression_m);
         non_negative("speed_rpm", speed_rpm)?;
         for (i, v) in load.load_n_nm.iter().enumerate() {
             finite(
@@ -295,7 +334,7 @@ impl BearingPair {
             )?;
         }
         finite("spring_growth_m", load.spring_growth_m)?;
-        let mut warm = [WarmStart::new(), WarmStart::new()];
+        let warm = &mut pw.balls;
         let (mut u, mut x) = (start_u, start_x);
         let scale = self
             .preload
@@ -306,15 +345,18 @@ impl BearingPair {
             let m = r[3].abs().max(r[4].abs()) / self.spacing_m.max(0.01);
             r[0].abs().max(r[1].abs()).max(r[2].abs()).max(r[5].abs()).max(m)
         };
-        let mut res = self.residual(&u, x, speed_rpm, load, &mut warm)?;
-        let mut rn = norm(&res.0);
+        let mut res = self.residual(&u, x, speed_rpm, load, warm)?;
+        let mut rn = norm(&res.r);
         let max_it = self.options.max_iterations;
         for it in 0..max_it {
             if rn <= tol {
-                return self.finish(u, x, speed_rpm, load, &mut warm, res, it);
+                let st = self.finish(u, x, speed_rpm, load, warm, res, it)?;
+                pw.displacement_m_rad = u;
+                pw.spring_compression_m = x;
+                return Ok(st);
             }
-            let jm = nalgebra::SMatrix::<f64, 6, 6>::from_fn(|i, j| res.1[i][j]);
-            let rv = nalgebra::SVector::<f64, 6>::from_fn(|i, _| -res.0[i]);
+            let jm = nalgebra::SMatrix::<f64, 6, 6>::from_fn(|i, j| res.jac[i][j]);
+            let rv = nalgebra::SVector::<f64, 6>::from_fn(|i, _| -res.r[i]);
             let dx = jm
                 .lu()
                 .solve(&rv)
@@ -334,8 +376,8 @@ impl BearingPair {
                 } else {
                     0.0
                 };
-                if let Ok(rt) = self.residual(&ut, xt, speed_rpm, load, &mut warm) {
-                    let rtn = norm(&rt.0);
+                if let Ok(rt) = self.residual(&ut, xt, speed_rpm, load, warm) {
+                    let rtn = norm(&rt.r);
                     if rtn < rn || rtn <= tol {
                         (u, x, res, rn) = (ut, xt, rt, rtn);
                         accepted = true;
@@ -349,12 +391,15 @@ impl BearingPair {
             }
         }
         if rn <= tol {
-            return self.finish(u, x, speed_rpm, load, &mut warm, res, max_it);
+            let st = self.finish(u, x, speed_rpm, load, warm, res, max_it)?;
+            pw.displacement_m_rad = u;
+            pw.spring_compression_m = x;
+            return Ok(st);
         }
         Err(Error::convergence("bearing pair equilibrium", max_it, rn, tol))
     }
 
-    #[allow(clippy::too_many_arguments, clippy::type_complexity)]
+    #[allow(clippy::too_many_arguments)]
     fn finish(
         &self,
         u: [f64; 5],
@@ -362,29 +407,23 @@ impl BearingPair {
         speed_rpm: f64,
         load: &PairLoad,
         warm: &mut [WarmStart; 2],
-        res: ([f64; 6], [[f64; 6]; 6], [[f64; 5]; 5], [f64; 2]),
+        res: Residual,
         iterations: usize,
     ) -> Result<PairState> {
-        // Re-evaluate so that the warm starts hold the final balls.
-        let res = match self.residual(&u, x, speed_rpm, load, warm) {
-            Ok(r) => r,
-            Err(_) => res,
-        };
+        // The last residual evaluation was at (u, x): `warm` holds its balls.
         let q = self.local_q(&u, x, load);
         let mut states = Vec::with_capacity(2);
-        for k in 0..2 {
+        for (k, f) in res.forces.iter().enumerate() {
             let model = if k == 0 { &self.model_a } else { &self.model_b };
             let opts = SolveOptions {
                 offsets: load.offsets[k],
                 ..self.options
             };
-            let f = model.ring_forces(&q[k], speed_rpm, &opts, &mut warm[k])?;
             let balls = model.ball_states(&q[k], speed_rpm, &opts, &warm[k])?;
             let (ka, kr) = crate::bearing::seed_stiffness(model, &balls);
-            let applied = f.reaction_n_nm.map(|v| -v);
             states.push(BearingState {
                 displacement_m_rad: q[k],
-                applied_load_n_nm: applied,
+                applied_load_n_nm: f.reaction_n_nm.map(|v| -v),
                 balls,
                 stiffness_matrix_si: f.stiffness_matrix_si,
                 axial_stiffness_n_per_m: ka,
@@ -402,10 +441,10 @@ impl BearingPair {
             .ok_or_else(|| Error::convergence("bearing pair", 0, f64::NAN, 0.0))?;
         Ok(PairState {
             displacement_m_rad: u,
-            axial_force_n: res.3,
-            preload_n: 0.5 * (res.3[0] + res.3[1]),
+            axial_force_n: res.axial,
+            preload_n: 0.5 * (res.axial[0] + res.axial[1]),
             spring_compression_m: x,
-            stiffness_matrix_si: res.2,
+            stiffness_matrix_si: res.kpair,
             bearings: [a, b],
             iterations,
         })
@@ -421,7 +460,7 @@ impl BearingPair {
         };
         let mut warm = [WarmStart::new(), WarmStart::new()];
         let r = self.residual(u, x, speed_rpm, &no_load, &mut warm)?;
-        Ok([r.0[0], r.0[1], r.0[2], r.0[3], r.0[4]])
+        Ok([r.r[0], r.r[1], r.r[2], r.r[3], r.r[4]])
     }
 }
 
