@@ -10,6 +10,7 @@ defaults of HelicalPairParams::seed_a().
 
 Usage: python3 benches/dynamics_compare.py [--rust-steps N]
 """
+
 import math
 import subprocess
 import sys

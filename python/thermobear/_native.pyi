@@ -3,7 +3,7 @@
 SI inside; every argument name carries its unit. Arrays are float64 numpy.
 """
 
-from typing import Callable, Optional, Sequence
+from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 import numpy.typing as npt
@@ -121,3 +121,57 @@ def stiffness_curve(
     misalignment_rad: Optional[float] = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
+
+class Spindle:
+    @staticmethod
+    def preset(name: str) -> Spindle: ...
+    @staticmethod
+    def preset_names() -> list[str]: ...
+    def with_options(
+        self,
+        preload_n: float | None = None,
+        preload_kind: str | None = None,
+        spring_rate_n_per_um: float | None = None,
+        radial_load_n: float | None = None,
+        effects: list[str] | None = None,
+        spin_friction: float | None = None,
+    ) -> Spindle: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def preload_n(self) -> float: ...
+    @property
+    def preload_kind(self) -> str: ...
+    @property
+    def spring_rate_n_per_um(self) -> float | None: ...
+    @property
+    def radial_load_n(self) -> float: ...
+    @property
+    def node_names(self) -> list[str]: ...
+    @property
+    def effects(self) -> list[str]: ...
+    def assumptions(self) -> dict[str, Any]: ...
+    def steady_state(self, speed_rpm: float) -> dict[str, Any]: ...
+    def isothermal(self, speed_rpm: float) -> tuple[dict[str, Any], dict[str, Any]]: ...
+    def transient(
+        self,
+        speed_rpm: float,
+        duration_s: float,
+        dt_s: float = 5.0,
+        record_every: int = 1,
+        initial_c: float | None = None,
+        mechanics_update_k: float = 0.05,
+    ) -> dict[str, Any]: ...
+    def grid(
+        self,
+        speeds_rpm: list[float],
+        preloads_n: list[float],
+        radial_loads_n: list[float],
+        progress: Callable[[int, int], Any] | None = None,
+    ) -> dict[str, list[float]]: ...
+    def compensation(
+        self,
+        speeds_rpm: list[float],
+        spring_rate_n_per_um: float,
+        progress: Callable[[int, int], Any] | None = None,
+    ) -> dict[str, list[float]]: ...

@@ -145,6 +145,10 @@ def study_seed_b_bearing(out: Path, quick: bool = False) -> list[Path]:
 STUDIES: list[tuple[str, Callable[[Path, bool], list[Path]]]] = [
     ("seed_a_bearing", study_seed_a_bearing),
     ("seed_b_bearing", study_seed_b_bearing),
+    (
+        "seed_b_spindle",
+        __import__("thermobear.studies_seed_b", fromlist=["x"]).study_seed_b_spindle,
+    ),
 ]
 
 
