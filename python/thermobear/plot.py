@@ -159,3 +159,6 @@ def regime_map(
     ax.set_xlabel(x.replace("_", " "))
     ax.set_ylabel(y.replace("_", " "))
     return ax
+
+
+from .plot_spindle import *  # noqa: E402,F401,F403

@@ -51,8 +51,14 @@ fn pair_dict<'py>(py: Python<'py>, p: &PairState) -> PyResult<Bound<'py, PyDict>
     d.set_item("stiffness_matrix", PyArray2::from_vec2(py, &k)?)?;
     let b = &p.bearings[0].balls;
     let col = |f: &dyn Fn(&crate::bearing::BallState) -> f64| -> Vec<f64> { b.iter().map(f).collect() };
-    d.set_item("inner_contact_angle_deg", col(&|x| x.inner_contact_angle_rad.to_degrees()))?;
-    d.set_item("outer_contact_angle_deg", col(&|x| x.outer_contact_angle_rad.to_degrees()))?;
+    d.set_item(
+        "inner_contact_angle_deg",
+        col(&|x| x.inner_contact_angle_rad.to_degrees()),
+    )?;
+    d.set_item(
+        "outer_contact_angle_deg",
+        col(&|x| x.outer_contact_angle_rad.to_degrees()),
+    )?;
     d.set_item("inner_load_n", col(&|x| x.inner_load_n))?;
     d.set_item("outer_load_n", col(&|x| x.outer_load_n))?;
     Ok(d)
@@ -78,7 +84,10 @@ fn state_dict<'py>(py: Python<'py>, sp: &Spindle, s: &SpindleState) -> PyResult<
     d.set_item("boundary_flow_w", s.boundary_flow_w)?;
     d.set_item("axial_growth_m", s.axial_growth_m)?;
     let a0 = sp.config.params.front_bearing.geometry.free_contact_angle_rad;
-    d.set_item("front_radial_thermal_displacement_m", s.front_radial_thermal_displacement_m(a0))?;
+    d.set_item(
+        "front_radial_thermal_displacement_m",
+        s.front_radial_thermal_displacement_m(a0),
+    )?;
     d.set_item("front_ball_growth_m", s.front_offsets.ball_diameter_growth_m)?;
     d.set_item("iterations", s.iterations)?;
     d.set_item("temperature_change_k", s.temperature_change_k)?;
@@ -307,9 +316,13 @@ impl PySpindle {
             }
         }
         let sp = &self.inner;
-        let res = chunked_map(py, &items, default_chunk(items.len()), progress.as_ref(), |&(n, p, f)| {
-            grid_point(sp, n, p, f)
-        })?;
+        let res = chunked_map(
+            py,
+            &items,
+            default_chunk(items.len()),
+            progress.as_ref(),
+            |&(n, p, f)| grid_point(sp, n, p, f),
+        )?;
         let pts: Vec<GridPoint> = res.into_iter().collect::<Result<_>>().py_err()?;
         let d = PyDict::new(py);
         let col = |f: &dyn Fn(&GridPoint) -> f64| -> Vec<f64> { pts.iter().map(f).collect() };
@@ -333,10 +346,7 @@ impl PySpindle {
             "total_radial_displacement_um",
             col(&|g| g.total_radial_displacement_m() * 1e6),
         )?;
-        d.set_item(
-            "radial_stiffness_n_per_m",
-            col(&|g| g.front_radial_stiffness_n_per_m),
-        )?;
+        d.set_item("radial_stiffness_n_per_m", col(&|g| g.front_radial_stiffness_n_per_m))?;
         d.set_item(
             "radial_stiffness_isothermal_n_per_m",
             col(&|g| g.front_radial_stiffness_isothermal_n_per_m),
