@@ -280,7 +280,14 @@ def _paper_table(vs_speed, vs_preload, disp, mech, best, comp, settle, grid) -> 
             "is small; " + temps
         ),
     )
-    add("ball temperature rise 300 -> 500 N", "18,000 rpm", 17.1, "K", b5 - b3, "as above")
+    add(
+        "ball temperature rise 300 -> 500 N",
+        "18,000 rpm",
+        17.1,
+        "K",
+        b5 - b3,
+        "preload raises only M1 and the spin heat; " + temps,
+    )
     m300 = mech.filter(pl.col("preload_n") == 300.0)
     lo, hi = float(m300["speed_rpm"].min()), float(m300["speed_rpm"].max())
     add(
@@ -329,7 +336,7 @@ def _paper_table(vs_speed, vs_preload, disp, mech, best, comp, settle, grid) -> 
         96.13,
         "N",
         _pick(mech, "outer_load_max_n", speed_rpm=hi, preload_n=400.0),
-        "as above",
+        "largest ball; assumed internal geometry (16 balls of 11/32 in)",
     )
     d_steel = _pick(
         disp.filter(pl.col("balls") == "steel"), "radial_thermal_displacement_um", speed_rpm=hi
