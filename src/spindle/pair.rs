@@ -492,6 +492,30 @@ mod tests {
     }
 
     #[test]
+    fn pair_stiffness_is_sum_of_mirrored_bearings() {
+        let p = pair(Preload::Rigid { force_n: 400.0 });
+        let s = p.solve(9000.0, &PairLoad::default()).unwrap();
+        let (ka, kb) = (&s.bearings[0].stiffness_matrix_si, &s.bearings[1].stiffness_matrix_si);
+        let k = &s.stiffness_matrix_si;
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs());
+        // Translations add directly; the mirror flips z and both tilts, so
+        // their diagonal terms add as well, and the x-z couplings cancel.
+        for i in 0..3 {
+            assert!(close(k[i][i], ka[i][i] + kb[i][i]), "{i}");
+        }
+        assert!(k[0][2].abs() <= 1e-6 * k[0][0]);
+        // Tilt about y: the shaft tilt moves A by -h theta_y and B (mirrored,
+        // local tilt -theta_y) by +h theta_y radially, so each bearing adds
+        // K_44 + h^2 K_00 - h (K_04 + K_40).
+        let h = 0.5 * p.spacing_m;
+        let one = |k: &[[f64; 5]; 5]| k[4][4] + h * h * k[0][0] - h * (k[0][4] + k[4][0]);
+        let expect = one(ka) + one(kb);
+        assert!((k[4][4] - expect).abs() <= 1e-6 * k[4][4].abs(), "{} {expect}", k[4][4]);
+        // Symmetric pair without load: equal stiffness of both bearings.
+        assert!(close(ka[2][2], kb[2][2]) && close(ka[0][0], kb[0][0]));
+    }
+
+    #[test]
     fn pair_stiffness_is_jacobian_of_pair_force() {
         let p = pair(Preload::Rigid { force_n: 300.0 });
         let load = PairLoad {
