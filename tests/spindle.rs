@@ -170,3 +170,27 @@ fn bad_input_is_rejected() {
     ));
     assert!(optimal_preload(&sp, &[12_000.0], &[]).is_err());
 }
+
+#[test]
+fn optimal_preload_trades_stiffness_against_heat() {
+    let sp = spring_spindle("hybrid", 300.0).with_radial_load(500.0).unwrap();
+    let best = optimal_preload(&sp, &[12_000.0], &[200.0, 400.0, 600.0]).unwrap();
+    let b = &best[0];
+    // More preload: stiffer pair (less mechanical displacement under the
+    // working load) but more heat (more thermal displacement).
+    for w in b.scan.windows(2) {
+        assert!(w[1].mechanical_radial_displacement_m < w[0].mechanical_radial_displacement_m);
+        assert!(w[1].thermal_radial_displacement_m > w[0].thermal_radial_displacement_m);
+        assert!(w[1].bearing_heat_w > w[0].bearing_heat_w);
+    }
+    let min = b
+        .scan
+        .iter()
+        .map(|g| g.total_radial_displacement_m())
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(b.min_radial_displacement_m, min);
+    assert!(b
+        .scan
+        .iter()
+        .any(|g| g.preload_n == b.optimal_preload_n && g.total_radial_displacement_m() == min));
+}
