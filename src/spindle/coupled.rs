@@ -569,18 +569,35 @@ impl Spindle {
         let bearing_heat_w = |e: &Evaluation| e.heat.iter().map(|h| h.heat.total_w()).sum::<f64>();
         history.push((ev.front.preload_n, bearing_heat_w(&ev), f64::INFINITY));
         let mut growing = 0usize;
+        // Fixed point x -> G(x) (G: mechanics, heat, network solve) with
+        // Aitken / Irons-Tuck dynamic relaxation x <- x + w (G(x) - x): the
+        // plain iteration oscillates (hot oil -> thin film -> less viscous
+        // heat -> cooler) with a ratio near -0.6.
+        let mut x = temps.temperatures_c.clone();
+        let mut omega = 1.0_f64;
+        let mut r_prev: Option<Vec<f64>> = None;
         for it in 1..=self.config.max_iterations {
-            let next_ev = match self.evaluate(speed_rpm, Some(&temps.temperatures_c), &mut warm) {
+            let next_ev = match self.evaluate(speed_rpm, Some(&x), &mut warm) {
                 Ok(e) => e,
                 Err(err) => return Err(self.runaway_or(err, &history, speed_rpm)),
             };
             let next = solver.solve(&next_ev.sources_w, speed)?;
-            let change = next
-                .temperatures_c
-                .iter()
-                .zip(&temps.temperatures_c)
-                .map(|(a, b)| (a - b).abs())
-                .fold(0.0, f64::max);
+            let r: Vec<f64> = next.temperatures_c.iter().zip(&x).map(|(a, b)| a - b).collect();
+            let change = r.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            if let Some(rp) = &r_prev {
+                let (mut num, mut den) = (0.0, 0.0);
+                for (a, b) in r.iter().zip(rp) {
+                    num += b * (a - b);
+                    den += (a - b) * (a - b);
+                }
+                if den > 0.0 {
+                    omega = (-omega * num / den).clamp(0.05, 1.5);
+                }
+            }
+            for (xi, ri) in x.iter_mut().zip(&r) {
+                *xi += omega * ri;
+            }
+            r_prev = Some(r);
             let entry = (next_ev.front.preload_n, bearing_heat_w(&next_ev), change);
             let last = history[history.len() - 1];
             if entry.0 > last.0 && entry.1 > last.1 && change >= last.2 * 0.999 {
