@@ -19,6 +19,7 @@ pub mod error;
 pub mod gear;
 pub mod materials;
 pub mod rotor;
+pub mod spindle;
 pub mod thermal;
 pub mod units;
 

@@ -12,6 +12,18 @@ from __future__ import annotations
 from . import _native
 from .bearing import Bearing, BearingSolution, Material, stiffness_curve
 from .config import load_config, seed_config, seed_config_names
+from .spindle import (
+    Spindle,
+    compensation_preload,
+    optimal_preload,
+    spindle_grid,
+    transient,
+)
+
+try:  # the bearing thermal module (another branch) owns `thermal_state`
+    from .thermal import thermal_state  # type: ignore[attr-defined]
+except ImportError:  # pragma: no cover - depends on the merged modules
+    from .spindle import thermal_state
 from .errors import (
     ConfigError,
     ConvergenceError,
@@ -72,4 +84,10 @@ __all__ = [
     "seed_config",
     "seed_config_names",
     "stiffness_curve",
+    "Spindle",
+    "compensation_preload",
+    "optimal_preload",
+    "spindle_grid",
+    "thermal_state",
+    "transient",
 ]

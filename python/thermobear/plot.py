@@ -162,3 +162,4 @@ def regime_map(
 
 
 from .plot_rotor import campbell, spectrum, vibration  # noqa: E402,F401  (rotor figures)
+from .plot_spindle import *  # noqa: E402,F401,F403

@@ -9,6 +9,7 @@ pub mod gear;
 pub mod parallel;
 pub mod rotor;
 pub mod solve;
+pub mod spindle;
 
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -17,6 +18,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     solve::register(m)?;
     gear::register(m)?;
     rotor::register(m)?;
+    spindle::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

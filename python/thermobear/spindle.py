@@ -1,0 +1,324 @@
+"""Motorized spindle (seed B): two back-to-back angular-contact bearing
+pairs on one shaft, rigid or spring preload, coupled with the spindle's
+thermal network (motor losses, water jacket, oil-air).
+
+``Spindle.preset("seed-ceramic-spindle")`` has hybrid bearings (Si3N4 balls,
+steel rings), ``"seed-steel-spindle"`` all-steel ones. Every assumption
+(dimensions, losses, fits, preload model) is listed by
+``Spindle.assumptions``. All functions return polars DataFrames with
+unit-suffixed columns; sweeps run in Rust across threads with the GIL
+released (Ctrl-C works, ``progress(done, total)`` is called between chunks).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable, Optional, Sequence
+
+import numpy as np
+
+from . import _native
+
+__all__ = [
+    "SEED_B_SPRING_RATE_N_PER_UM",
+    "Spindle",
+    "compensation_preload",
+    "optimal_preload",
+    "spindle_grid",
+    "thermal_state",
+    "transient",
+]
+
+#: Spring rate implied by seed B Fig. 17: 6.45 N / 17.92 um.
+SEED_B_SPRING_RATE_N_PER_UM = 6.45 / 17.92
+
+
+class Spindle:
+    """A motorized spindle. Build with :meth:`preset`, change settings with
+    :meth:`with_options` (returns a new spindle)."""
+
+    def __init__(self, native: Any) -> None:
+        self._native = native
+
+    @staticmethod
+    def preset(name: str) -> "Spindle":
+        """``seed-ceramic-spindle`` (hybrid), ``seed-steel-spindle``,
+        ``seed-full-ceramic-spindle``."""
+        return Spindle(_native.Spindle.preset(name))
+
+    @staticmethod
+    def preset_names() -> list[str]:
+        return list(_native.Spindle.preset_names())
+
+    def with_options(
+        self,
+        *,
+        preload_n: Optional[float] = None,
+        preload_kind: Optional[str] = None,
+        spring_rate_n_per_um: Optional[float] = None,
+        radial_load_n: Optional[float] = None,
+        effects: Optional[Sequence[str]] = None,
+        spin_friction: Optional[float] = None,
+    ) -> "Spindle":
+        """A copy with other settings; ``preload_kind`` is ``"rigid"`` or
+        ``"spring"`` (a spring keeps ``spring_rate_n_per_um``, default seed
+        B's 0.36 N/um)."""
+        return Spindle(
+            self._native.with_options(
+                preload_n=preload_n,
+                preload_kind=preload_kind,
+                spring_rate_n_per_um=spring_rate_n_per_um,
+                radial_load_n=radial_load_n,
+                effects=list(effects) if effects is not None else None,
+                spin_friction=spin_friction,
+            )
+        )
+
+    @property
+    def name(self) -> str:
+        return self._native.name
+
+    @property
+    def preload_n(self) -> float:
+        return self._native.preload_n
+
+    @property
+    def preload_kind(self) -> str:
+        return self._native.preload_kind
+
+    @property
+    def spring_rate_n_per_um(self) -> Optional[float]:
+        return self._native.spring_rate_n_per_um
+
+    @property
+    def radial_load_n(self) -> float:
+        return self._native.radial_load_n
+
+    @property
+    def node_names(self) -> list[str]:
+        return list(self._native.node_names)
+
+    @property
+    def assumptions(self) -> dict[str, Any]:
+        """Every assumed number and modelling choice."""
+        return dict(self._native.assumptions())
+
+    def __repr__(self) -> str:
+        return (
+            f"Spindle({self.name!r}, preload {self.preload_n:g} N {self.preload_kind}, "
+            f"radial load {self.radial_load_n:g} N)"
+        )
+
+    def thermal_state(
+        self,
+        speed_rpm: float,
+        preload_n: Optional[float] = None,
+        radial_n: Optional[float] = None,
+        preload_kind: Optional[str] = None,
+        effects: Optional[Sequence[str]] = None,
+        **unused: Any,
+    ) -> Any:
+        """Coupled steady state at one speed as a one-row DataFrame: node
+        temperatures (``<node>_c``), heat, preload, axial growth, radial
+        thermal displacement, front-bearing contact angles and loads,
+        radial stiffness, convergence report."""
+        import polars as pl
+
+        from .errors import ConfigError
+
+        if unused:
+            raise ConfigError(
+                f"invalid argument = {sorted(unused)[0]}: a spindle takes speed_rpm, "
+                "preload_n, radial_n, preload_kind, effects"
+            )
+        sp = self
+        if any(v is not None for v in (preload_n, radial_n, preload_kind, effects)):
+            sp = self.with_options(
+                preload_n=preload_n,
+                radial_load_n=radial_n,
+                preload_kind=preload_kind,
+                effects=effects,
+            )
+        d = sp._native.steady_state(float(speed_rpm))
+        return pl.DataFrame([_state_row(d, sp)])
+
+    _thermal_state = thermal_state
+
+    def isothermal(self, speed_rpm: float) -> Any:
+        """Front pair without thermal effects at speed (one-row DataFrame)."""
+        import polars as pl
+
+        front, _ = self._native.isothermal(float(speed_rpm))
+        row = {"speed_rpm": float(speed_rpm)}
+        row.update(_pair_row(front))
+        return pl.DataFrame([row])
+
+
+def _pair_row(p: dict) -> dict:
+    k = np.asarray(p["stiffness_matrix"])
+    return {
+        "operating_preload_n": p["preload_n"],
+        "spring_compression_um": p["spring_compression_m"] * 1e6,
+        "radial_displacement_um": float(np.asarray(p["displacement"])[0]) * 1e6,
+        "inner_contact_angle_deg": float(np.mean(p["inner_contact_angle_deg"])),
+        "outer_contact_angle_deg": float(np.mean(p["outer_contact_angle_deg"])),
+        "inner_load_max_n": float(np.max(p["inner_load_n"])),
+        "outer_load_max_n": float(np.max(p["outer_load_n"])),
+        "radial_stiffness_n_per_m": float(k[0, 0]),
+        "axial_stiffness_n_per_m": float(k[2, 2]),
+    }
+
+
+def _state_row(d: dict, sp: Spindle) -> dict:
+    row: dict[str, Any] = {
+        "speed_rpm": d["speed_rpm"],
+        "preload_n": sp.preload_n,
+        "preload_kind": sp.preload_kind,
+    }
+    for name, t in zip(d["node_names"], d["temperatures_c"]):
+        row[f"{name}_c"] = t
+    row.update(_pair_row(d["front"]))
+    row["rear_operating_preload_n"] = d["rear"]["preload_n"]
+    row["front_bearing_heat_w"] = d["bearing_heat_w"][0]
+    row["front_spin_heat_w"] = d["spin_heat_w"][0]
+    row["bearing_heat_w"] = float(sum(d["bearing_heat_w"]))
+    row["motor_losses_w"] = d["motor_losses_w"]
+    row["total_heat_w"] = d["total_heat_w"]
+    row["boundary_flow_w"] = d["boundary_flow_w"]
+    row["axial_growth_um"] = d["axial_growth_m"] * 1e6
+    row["radial_thermal_displacement_um"] = d["front_radial_thermal_displacement_m"] * 1e6
+    row["ball_growth_um"] = d["front_ball_growth_m"] * 1e6
+    row["iterations"] = d["iterations"]
+    row["temperature_change_k"] = d["temperature_change_k"]
+    return row
+
+
+def _check(spindle: Any) -> Spindle:
+    from .errors import ConfigError
+
+    if not isinstance(spindle, Spindle):
+        raise ConfigError(f"invalid spindle = {type(spindle).__name__}: need a thermobear.Spindle")
+    return spindle
+
+
+def thermal_state(obj: Any, **kwargs: Any) -> Any:
+    """Coupled thermal state of a bearing or spindle: dispatches to
+    ``obj._thermal_state(**kwargs)``."""
+    from .errors import ConfigError
+
+    fn = getattr(obj, "_thermal_state", None)
+    if fn is None:
+        raise ConfigError(f"invalid object = {type(obj).__name__}: it has no thermal state")
+    return fn(**kwargs)
+
+
+def transient(
+    spindle: Spindle,
+    *,
+    speed_rpm: float,
+    duration_s: float,
+    dt_s: float = 5.0,
+    record_every: int = 1,
+    initial_c: Optional[float] = None,
+    mechanics_update_k: float = 0.05,
+) -> Any:
+    """Temperatures in time from a uniform start (default: ambient) at
+    constant speed: ``time_s`` and one ``<node>_c`` column per node. The
+    bearing heat follows the temperatures (quasi-steady mechanics, re-solved
+    when a node moved more than ``mechanics_update_k``)."""
+    import polars as pl
+
+    sp = _check(spindle)
+    d = sp._native.transient(
+        float(speed_rpm),
+        float(duration_s),
+        dt_s=float(dt_s),
+        record_every=int(record_every),
+        initial_c=initial_c,
+        mechanics_update_k=float(mechanics_update_k),
+    )
+    t = np.asarray(d["temperatures_c"])
+    cols: dict[str, Any] = {"time_s": np.asarray(d["time_s"])}
+    for i, name in enumerate(d["node_names"]):
+        cols[f"{name}_c"] = t[:, i]
+    return pl.DataFrame(cols)
+
+
+def spindle_grid(
+    spindle: Spindle,
+    *,
+    speeds_rpm: Sequence[float],
+    preloads_n: Sequence[float],
+    radial_loads_n: Optional[Sequence[float]] = None,
+    progress: Optional[Callable[[int, int], Any]] = None,
+) -> Any:
+    """Speed x preload x load grid of coupled steady states (threads, GIL
+    released): temperatures, operating preload, heat, radial displacements
+    (mechanical, thermal, total) and radial stiffness with and without
+    thermal effects."""
+    import polars as pl
+
+    sp = _check(spindle)
+    loads = [sp.radial_load_n] if radial_loads_n is None else list(radial_loads_n)
+    d = sp._native.grid(
+        [float(v) for v in speeds_rpm],
+        [float(v) for v in preloads_n],
+        [float(v) for v in loads],
+        progress,
+    )
+    return pl.DataFrame({k: np.asarray(v) for k, v in d.items()})
+
+
+def optimal_preload(
+    spindle: Spindle,
+    *,
+    speeds_rpm: Sequence[float],
+    preloads_n: Sequence[float],
+    radial_n: Optional[float] = None,
+    progress: Optional[Callable[[int, int], Any]] = None,
+) -> Any:
+    """Preload with the least total radial displacement (mechanical under the
+    working radial load, cold geometry at speed, plus the radial thermal
+    displacement; seed B Figs. 15-16) at each speed: ``speed_rpm``,
+    ``optimal_preload_n``, ``min_radial_displacement_um`` and the parts."""
+    import polars as pl
+
+    sp = _check(spindle)
+    if radial_n is not None:
+        sp = sp.with_options(radial_load_n=radial_n)
+    grid = spindle_grid(sp, speeds_rpm=speeds_rpm, preloads_n=preloads_n, progress=progress)
+    best = (
+        grid.sort(["speed_rpm", "total_radial_displacement_um", "preload_n"])
+        .group_by("speed_rpm", maintain_order=True)
+        .first()
+    )
+    return best.select(
+        pl.col("speed_rpm"),
+        pl.col("preload_n").alias("optimal_preload_n"),
+        pl.col("total_radial_displacement_um").alias("min_radial_displacement_um"),
+        pl.col("mechanical_radial_displacement_um"),
+        pl.col("thermal_radial_displacement_um"),
+        pl.col("front_balls_c"),
+        pl.col("radial_load_n"),
+    )
+
+
+def compensation_preload(
+    spindle: Spindle,
+    *,
+    speeds_rpm: Sequence[float],
+    spring_rate_n_per_um: float = SEED_B_SPRING_RATE_N_PER_UM,
+    progress: Optional[Callable[[int, int], Any]] = None,
+) -> Any:
+    """Seed B Fig. 17: with a spring preload the spindle's axial thermal
+    growth compresses the spring, dF = k_s u_axial. Columns ``speed_rpm``,
+    ``axial_growth_um``, ``compensation_preload_n`` (k_s u),
+    ``solved_preload_change_n`` (coupled solve, spring in series with the
+    bearings), ``spring_rate_n_per_um``."""
+    import polars as pl
+
+    sp = _check(spindle)
+    d = sp._native.compensation(
+        [float(v) for v in speeds_rpm], float(spring_rate_n_per_um), progress
+    )
+    df = pl.DataFrame({k: np.asarray(v) for k, v in d.items()})
+    return df.with_columns(pl.lit(float(spring_rate_n_per_um)).alias("spring_rate_n_per_um"))

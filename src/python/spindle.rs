@@ -1,0 +1,387 @@
+//! Bindings for the motorized spindle (seed B): coupled steady state,
+//! transient, speed x preload x load grids and the compensation preload.
+//! Sweeps run through `chunked_map` (GIL released, Ctrl-C, progress).
+
+use numpy::{IntoPyArray, PyArray2};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use super::errors::IntoPy;
+use super::parallel::{chunked_map, default_chunk};
+use crate::effects::EffectSet;
+use crate::error::{finite, non_negative, positive, Error, Result};
+use crate::spindle::{
+    compensation_preload, grid_point, CompensationPoint, GridPoint, PairState, Preload, Spindle, SpindleConfig,
+    SpindleState,
+};
+
+/// Preset names and their bearing variant.
+const PRESETS: [(&str, &str); 3] = [
+    ("seed-ceramic-spindle", "hybrid"),
+    ("seed-steel-spindle", "steel"),
+    ("seed-full-ceramic-spindle", "ceramic"),
+];
+
+/// A motorized spindle (native).
+#[pyclass(name = "Spindle", module = "thermobear._native", frozen)]
+#[derive(Clone)]
+pub struct PySpindle {
+    pub inner: Spindle,
+    pub name: String,
+}
+
+fn preload_of(kind: &str, force_n: f64, rate_n_per_um: f64) -> Result<Preload> {
+    match kind {
+        "rigid" => Ok(Preload::Rigid { force_n }),
+        "spring" => Ok(Preload::Spring {
+            force_n,
+            rate_n_per_m: non_negative("spring_rate_n_per_um", rate_n_per_um)? * 1e6,
+        }),
+        other => Err(Error::config("preload_kind", other, "must be \"rigid\" or \"spring\"")),
+    }
+}
+
+fn pair_dict<'py>(py: Python<'py>, p: &PairState) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("displacement", p.displacement_m_rad.to_vec().into_pyarray(py))?;
+    d.set_item("axial_force_n", p.axial_force_n.to_vec())?;
+    d.set_item("preload_n", p.preload_n)?;
+    d.set_item("spring_compression_m", p.spring_compression_m)?;
+    let k: Vec<Vec<f64>> = p.stiffness_matrix_si.iter().map(|r| r.to_vec()).collect();
+    d.set_item("stiffness_matrix", PyArray2::from_vec2(py, &k)?)?;
+    let b = &p.bearings[0].balls;
+    let col = |f: &dyn Fn(&crate::bearing::BallState) -> f64| -> Vec<f64> { b.iter().map(f).collect() };
+    d.set_item(
+        "inner_contact_angle_deg",
+        col(&|x| x.inner_contact_angle_rad.to_degrees()),
+    )?;
+    d.set_item(
+        "outer_contact_angle_deg",
+        col(&|x| x.outer_contact_angle_rad.to_degrees()),
+    )?;
+    d.set_item("inner_load_n", col(&|x| x.inner_load_n))?;
+    d.set_item("outer_load_n", col(&|x| x.outer_load_n))?;
+    Ok(d)
+}
+
+fn state_dict<'py>(py: Python<'py>, sp: &Spindle, s: &SpindleState) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("speed_rpm", s.speed_rpm)?;
+    d.set_item("node_names", s.temperatures.names.to_vec())?;
+    d.set_item("temperatures_c", s.temperatures.temperatures_c.clone())?;
+    d.set_item("front", pair_dict(py, &s.front)?)?;
+    d.set_item("rear", pair_dict(py, &s.rear)?)?;
+    let heat: Vec<f64> = s.bearing_heat.iter().map(|h| h.heat.total_w()).collect();
+    d.set_item("bearing_heat_w", heat)?;
+    let spin: Vec<f64> = s
+        .bearing_heat
+        .iter()
+        .map(|h| h.heat.inner_spin_w + h.heat.outer_spin_w)
+        .collect();
+    d.set_item("spin_heat_w", spin)?;
+    d.set_item("motor_losses_w", s.motor_losses_w)?;
+    d.set_item("total_heat_w", s.total_heat_w)?;
+    d.set_item("boundary_flow_w", s.boundary_flow_w)?;
+    d.set_item("axial_growth_m", s.axial_growth_m)?;
+    let a0 = sp.config.params.front_bearing.geometry.free_contact_angle_rad;
+    d.set_item(
+        "front_radial_thermal_displacement_m",
+        s.front_radial_thermal_displacement_m(a0),
+    )?;
+    d.set_item("front_ball_growth_m", s.front_offsets.ball_diameter_growth_m)?;
+    d.set_item("iterations", s.iterations)?;
+    d.set_item("temperature_change_k", s.temperature_change_k)?;
+    Ok(d)
+}
+
+#[pymethods]
+impl PySpindle {
+    /// A preset spindle by name (see `preset_names`).
+    #[staticmethod]
+    fn preset(name: &str) -> PyResult<Self> {
+        let variant = PRESETS
+            .iter()
+            .find(|(n, _)| n.eq_ignore_ascii_case(name))
+            .map(|(_, v)| *v)
+            .ok_or_else(|| {
+                Error::config(
+                    "spindle",
+                    name,
+                    format!(
+                        "unknown spindle preset; known: {}",
+                        PRESETS.iter().map(|p| p.0).collect::<Vec<_>>().join(", ")
+                    ),
+                )
+            })
+            .py_err()?;
+        let inner = Spindle::seed_b(variant).py_err()?;
+        Ok(PySpindle {
+            inner,
+            name: name.to_ascii_lowercase(),
+        })
+    }
+
+    #[staticmethod]
+    fn preset_names() -> Vec<&'static str> {
+        PRESETS.iter().map(|p| p.0).collect()
+    }
+
+    /// A copy with other settings (None keeps the current value).
+    #[pyo3(signature = (preload_n=None, preload_kind=None, spring_rate_n_per_um=None, radial_load_n=None, effects=None, spin_friction=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn with_options(
+        &self,
+        py: Python<'_>,
+        preload_n: Option<f64>,
+        preload_kind: Option<String>,
+        spring_rate_n_per_um: Option<f64>,
+        radial_load_n: Option<f64>,
+        effects: Option<Vec<String>>,
+        spin_friction: Option<f64>,
+    ) -> PyResult<Self> {
+        let c = &self.inner.config;
+        let (kind0, rate0) = match c.preload {
+            Preload::Rigid { .. } => ("rigid", crate::spindle::SEED_B_SPRING_RATE_N_PER_M * 1e-6),
+            Preload::Spring { rate_n_per_m, .. } => ("spring", rate_n_per_m * 1e-6),
+        };
+        let kind = preload_kind.unwrap_or_else(|| kind0.to_string());
+        let force = preload_n.unwrap_or(c.preload.force_n());
+        let preload = preload_of(&kind, force, spring_rate_n_per_um.unwrap_or(rate0)).py_err()?;
+        let mut cfg: SpindleConfig = c.clone();
+        cfg.preload = preload;
+        if let Some(f) = radial_load_n {
+            cfg.radial_load_n = finite("radial_load_n", f).py_err()?;
+        }
+        if let Some(names) = effects {
+            cfg.effects = EffectSet::from_names(&names).py_err()?;
+        }
+        if let Some(mu) = spin_friction {
+            cfg.spin_friction = non_negative("spin_friction", mu).py_err()?;
+        }
+        let inner = py.detach(|| Spindle::new(cfg)).py_err()?;
+        Ok(PySpindle {
+            inner,
+            name: self.name.clone(),
+        })
+    }
+
+    #[getter]
+    fn name(&self) -> &str {
+        &self.name
+    }
+
+    #[getter]
+    fn preload_n(&self) -> f64 {
+        self.inner.config.preload.force_n()
+    }
+
+    #[getter]
+    fn preload_kind(&self) -> &'static str {
+        match self.inner.config.preload {
+            Preload::Rigid { .. } => "rigid",
+            Preload::Spring { .. } => "spring",
+        }
+    }
+
+    /// Spring rate [N/um] (None for a rigid preload).
+    #[getter]
+    fn spring_rate_n_per_um(&self) -> Option<f64> {
+        match self.inner.config.preload {
+            Preload::Rigid { .. } => None,
+            Preload::Spring { rate_n_per_m, .. } => Some(rate_n_per_m * 1e-6),
+        }
+    }
+
+    #[getter]
+    fn radial_load_n(&self) -> f64 {
+        self.inner.config.radial_load_n
+    }
+
+    #[getter]
+    fn node_names(&self) -> Vec<String> {
+        self.inner.network.network.names().to_vec()
+    }
+
+    #[getter]
+    fn effects(&self) -> Vec<&'static str> {
+        self.inner.config.effects.names()
+    }
+
+    /// The assumed data (numbers in SI or as named; strings for choices).
+    fn assumptions<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let c = &self.inner.config;
+        let p = &c.params;
+        let d = PyDict::new(py);
+        d.set_item("front_bearing", p.front_bearing.name.clone())?;
+        d.set_item("rear_bearing", p.rear_bearing.name.clone())?;
+        d.set_item("ball_material", p.front_bearing.ball.name.clone())?;
+        d.set_item("pair_arrangement", "back-to-back, adjacent (spacing = bearing width)")?;
+        d.set_item("front_span_mm", p.front_span_m * 1e3)?;
+        d.set_item("rear_span_mm", p.rear_span_m * 1e3)?;
+        d.set_item("nose_length_mm", p.nose_length_m * 1e3)?;
+        d.set_item("rotor_diameter_mm", p.rotor_diameter_m * 1e3)?;
+        d.set_item("rotor_length_mm", p.rotor_length_m * 1e3)?;
+        d.set_item("sleeve_outer_diameter_mm", p.sleeve_outer_diameter_m * 1e3)?;
+        d.set_item("water_flow_l_min", p.water_flow_l_min)?;
+        d.set_item("water_temperature_c", p.water_temperature_c)?;
+        d.set_item("ambient_temperature_c", p.ambient_temperature_c)?;
+        d.set_item("oil_air_temperature_c", p.oil_air_temperature_c)?;
+        d.set_item("assembly_temperature_c", c.assembly_temperature_c)?;
+        d.set_item("lubricant", p.lubricant.name.clone())?;
+        d.set_item("lubrication_factor_f0", p.lubrication_factor_f0)?;
+        d.set_item("spin_friction", c.spin_friction)?;
+        d.set_item(
+            "motor_losses_at_reference_w",
+            p.stator_copper_w + p.stator_iron_w + p.rotor_copper_w + p.rotor_mechanical_w,
+        )?;
+        d.set_item("loss_reference_rpm", p.loss_reference_rpm)?;
+        d.set_item("preload_kind", self.preload_kind())?;
+        d.set_item("preload_n", c.preload.force_n())?;
+        d.set_item("spring_rate_n_per_um", self.spring_rate_n_per_um())?;
+        d.set_item("radial_load_at_nose_n", c.radial_load_n)?;
+        d.set_item(
+            "fits",
+            "inner ring tight on the shaft, outer ring loose in a steel housing",
+        )?;
+        d.set_item(
+            "rigid_preload",
+            "fixed interference per pair; the rear set floats, the growth between the sets loads nothing",
+        )?;
+        d.set_item(
+            "spring_preload",
+            "one spring pack in the load path of all bearings; the axial growth between the sets compresses it",
+        )?;
+        Ok(d)
+    }
+
+    /// Coupled steady state at one speed (GIL released).
+    fn steady_state<'py>(&self, py: Python<'py>, speed_rpm: f64) -> PyResult<Bound<'py, PyDict>> {
+        let s = py.detach(|| self.inner.steady_state(speed_rpm)).py_err()?;
+        state_dict(py, &self.inner, &s)
+    }
+
+    /// Bearing pairs at speed without thermal effects (front, rear).
+    fn isothermal<'py>(&self, py: Python<'py>, speed_rpm: f64) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+        let (f, r) = py.detach(|| self.inner.isothermal(speed_rpm)).py_err()?;
+        Ok((pair_dict(py, &f)?, pair_dict(py, &r)?))
+    }
+
+    /// Transient from uniform `initial_c` (default ambient): times [s],
+    /// node names and temperatures (rows: times) [C] (GIL released).
+    #[pyo3(signature = (speed_rpm, duration_s, dt_s=5.0, record_every=1, initial_c=None, mechanics_update_k=0.05))]
+    #[allow(clippy::too_many_arguments)]
+    fn transient<'py>(
+        &self,
+        py: Python<'py>,
+        speed_rpm: f64,
+        duration_s: f64,
+        dt_s: f64,
+        record_every: usize,
+        initial_c: Option<f64>,
+        mechanics_update_k: f64,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        non_negative("mechanics_update_k", mechanics_update_k).py_err()?;
+        let run = py
+            .detach(|| {
+                self.inner
+                    .transient(speed_rpm, duration_s, dt_s, record_every, initial_c, mechanics_update_k)
+            })
+            .py_err()?;
+        let d = PyDict::new(py);
+        d.set_item("time_s", run.times_s.clone().into_pyarray(py))?;
+        d.set_item("node_names", run.names.to_vec())?;
+        d.set_item("temperatures_c", PyArray2::from_vec2(py, &run.temperatures_c)?)?;
+        Ok(d)
+    }
+
+    /// Speed x preload x load grid (speed outermost), columns as arrays.
+    #[pyo3(signature = (speeds_rpm, preloads_n, radial_loads_n, progress=None))]
+    fn grid<'py>(
+        &self,
+        py: Python<'py>,
+        speeds_rpm: Vec<f64>,
+        preloads_n: Vec<f64>,
+        radial_loads_n: Vec<f64>,
+        progress: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let mut items = Vec::new();
+        for &n in &speeds_rpm {
+            positive("speeds_rpm", n).py_err()?;
+            for &p in &preloads_n {
+                positive("preloads_n", p).py_err()?;
+                for &f in &radial_loads_n {
+                    finite("radial_loads_n", f).py_err()?;
+                    items.push((n, p, f));
+                }
+            }
+        }
+        let sp = &self.inner;
+        let res = chunked_map(
+            py,
+            &items,
+            default_chunk(items.len()),
+            progress.as_ref(),
+            |&(n, p, f)| grid_point(sp, n, p, f),
+        )?;
+        let pts: Vec<GridPoint> = res.into_iter().collect::<Result<_>>().py_err()?;
+        let d = PyDict::new(py);
+        let col = |f: &dyn Fn(&GridPoint) -> f64| -> Vec<f64> { pts.iter().map(f).collect() };
+        d.set_item("speed_rpm", col(&|g| g.speed_rpm))?;
+        d.set_item("preload_n", col(&|g| g.preload_n))?;
+        d.set_item("radial_load_n", col(&|g| g.radial_load_n))?;
+        d.set_item("front_balls_c", col(&|g| g.front_balls_c))?;
+        d.set_item("front_inner_c", col(&|g| g.front_inner_c))?;
+        d.set_item("front_outer_c", col(&|g| g.front_outer_c))?;
+        d.set_item("operating_preload_n", col(&|g| g.operating_preload_n))?;
+        d.set_item("bearing_heat_w", col(&|g| g.bearing_heat_w))?;
+        d.set_item(
+            "mechanical_radial_displacement_um",
+            col(&|g| g.mechanical_radial_displacement_m * 1e6),
+        )?;
+        d.set_item(
+            "thermal_radial_displacement_um",
+            col(&|g| g.thermal_radial_displacement_m * 1e6),
+        )?;
+        d.set_item(
+            "total_radial_displacement_um",
+            col(&|g| g.total_radial_displacement_m() * 1e6),
+        )?;
+        d.set_item("radial_stiffness_n_per_m", col(&|g| g.front_radial_stiffness_n_per_m))?;
+        d.set_item(
+            "radial_stiffness_isothermal_n_per_m",
+            col(&|g| g.front_radial_stiffness_isothermal_n_per_m),
+        )?;
+        d.set_item("axial_growth_um", col(&|g| g.axial_growth_m * 1e6))?;
+        Ok(d)
+    }
+
+    /// Compensation preload (seed B Fig. 17) at each speed for a spring of
+    /// `spring_rate_n_per_um` (the preload force is kept).
+    #[pyo3(signature = (speeds_rpm, spring_rate_n_per_um, progress=None))]
+    fn compensation<'py>(
+        &self,
+        py: Python<'py>,
+        speeds_rpm: Vec<f64>,
+        spring_rate_n_per_um: f64,
+        progress: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let ks = non_negative("spring_rate_n_per_um", spring_rate_n_per_um).py_err()? * 1e6;
+        let sp = &self.inner;
+        let res = chunked_map(py, &speeds_rpm, 1, progress.as_ref(), |&n| {
+            compensation_preload(sp, &[n], ks).map(|v| v[0])
+        })?;
+        let pts: Vec<CompensationPoint> = res.into_iter().collect::<Result<_>>().py_err()?;
+        let d = PyDict::new(py);
+        let col = |f: &dyn Fn(&CompensationPoint) -> f64| -> Vec<f64> { pts.iter().map(f).collect() };
+        d.set_item("speed_rpm", col(&|p| p.speed_rpm))?;
+        d.set_item("axial_growth_um", col(&|p| p.axial_growth_m * 1e6))?;
+        d.set_item("compensation_preload_n", col(&|p| p.compensation_preload_n))?;
+        d.set_item("solved_preload_change_n", col(&|p| p.solved_preload_change_n))?;
+        Ok(d)
+    }
+}
+
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PySpindle>()?;
+    Ok(())
+}

@@ -1,0 +1,196 @@
+//! Coupled spindle (seed B): heat balance, transient settling, material and
+//! preload trends, compensation preload, runaway detection, determinism.
+
+use thermobear::spindle::*;
+use thermobear::Error;
+
+fn spring_spindle(variant: &str, force_n: f64) -> Spindle {
+    Spindle::seed_b(variant)
+        .unwrap()
+        .with_preload(Preload::Spring {
+            force_n,
+            rate_n_per_m: SEED_B_SPRING_RATE_N_PER_M,
+        })
+        .unwrap()
+}
+
+#[test]
+fn steady_state_heat_balance() {
+    let sp = spring_spindle("hybrid", 300.0);
+    let s = sp.steady_state(12_000.0).unwrap();
+    // Sources = motor + all bearing heat; all of it leaves through the boundaries.
+    let bearings: f64 = s.bearing_heat.iter().map(|h| h.heat.total_w()).sum();
+    assert!((s.total_heat_w - s.motor_losses_w - bearings).abs() < 1e-9 * s.total_heat_w);
+    assert!(
+        (s.boundary_flow_w - s.total_heat_w).abs() < 1e-6 * s.total_heat_w,
+        "{s:?}"
+    );
+    assert!(s.temperature_change_k <= sp.config.tolerance_k);
+    // Spring balance: every bearing carries F0 + k_s x.
+    let f = 300.0 + SEED_B_SPRING_RATE_N_PER_M * s.front.spring_compression_m;
+    assert!((s.front.axial_force_n[1] - f).abs() < 1e-6 * f);
+}
+
+#[test]
+fn transient_settles_to_coupled_steady_state() {
+    let sp = spring_spindle("hybrid", 300.0);
+    let s = sp.steady_state(12_000.0).unwrap();
+    // Slowest time constant about 520 s: 8000 s is more than 15 of them.
+    let run = sp.transient(12_000.0, 8000.0, 40.0, 50, None, 0.0).unwrap();
+    let last = run.temperatures_c.last().unwrap();
+    for (a, b) in last.iter().zip(&s.temperatures.temperatures_c) {
+        assert!((a - b).abs() < 0.02, "{a} {b}");
+    }
+    let node = sp.network.front_inner;
+    let (t95, _) = settling_times_s(&run, node, s.temperatures.temperatures_c[node], 0.95, 0.5);
+    let t95 = t95.unwrap();
+    assert!(t95 > 120.0 && t95 < 3600.0, "{t95}");
+}
+
+#[test]
+fn ceramic_balls_expand_less_than_steel() {
+    let h = spring_spindle("hybrid", 300.0).steady_state(18_000.0).unwrap();
+    let s = spring_spindle("steel", 300.0).steady_state(18_000.0).unwrap();
+    let a0 = 15f64.to_radians();
+    let (dh, ds) = (
+        h.front_radial_thermal_displacement_m(a0),
+        s.front_radial_thermal_displacement_m(a0),
+    );
+    assert!(dh > 0.0 && dh < ds, "{dh} {ds}");
+}
+
+#[test]
+fn temperatures_rise_with_speed_and_preload() {
+    let sp = spring_spindle("hybrid", 300.0);
+    let node = sp.network.front_balls;
+    let mut last = f64::NEG_INFINITY;
+    for n in [6_000.0, 12_000.0, 18_000.0] {
+        let t = sp.steady_state(n).unwrap().temperatures.temperatures_c[node];
+        assert!(t > last, "{n}: {t} <= {last}");
+        last = t;
+    }
+    let low = spring_spindle("hybrid", 200.0).steady_state(12_000.0).unwrap();
+    let high = spring_spindle("hybrid", 500.0).steady_state(12_000.0).unwrap();
+    assert!(high.temperatures.temperatures_c[node] > low.temperatures.temperatures_c[node]);
+    let heat = |s: &SpindleState| s.bearing_heat.iter().map(|h| h.heat.total_w()).sum::<f64>();
+    assert!(heat(&high) > heat(&low));
+}
+
+#[test]
+fn compensation_preload_is_spring_rate_times_growth() {
+    let sp = Spindle::seed_b("hybrid").unwrap();
+    let ks = SEED_B_SPRING_RATE_N_PER_M;
+    let pts = compensation_preload(&sp, &[12_000.0], ks).unwrap();
+    let p = pts[0];
+    assert!(p.axial_growth_m > 0.0);
+    assert!((p.compensation_preload_n - ks * p.axial_growth_m).abs() < 1e-12 * p.compensation_preload_n);
+    assert!(p.solved_preload_change_n > 0.0);
+}
+
+#[test]
+fn spring_growth_raises_force_by_rate_times_growth_in_series_with_bearings() {
+    // A spring of rate k_s compressed by u in series with the pair's own
+    // axial compliance: dF = k_s u k_b / (k_b + k_s), k_b >> k_s, so dF is
+    // just below k_s u (seed B's compensation preload takes dF = k_s u).
+    let sp = Spindle::seed_b("hybrid").unwrap();
+    let ks = SEED_B_SPRING_RATE_N_PER_M;
+    let pair = sp
+        .front
+        .with_preload(Preload::Spring {
+            force_n: 300.0,
+            rate_n_per_m: ks,
+        })
+        .unwrap();
+    let u = 30e-6;
+    let s0 = pair.solve(12_000.0, &PairLoad::default()).unwrap();
+    let s1 = pair
+        .solve(
+            12_000.0,
+            &PairLoad {
+                spring_growth_m: u,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+    let df = s1.preload_n - s0.preload_n;
+    // Bearings A and B in series along the axis (mean of both states).
+    let kz = |s: &PairState| {
+        let (a, b) = (
+            s.bearings[0].stiffness_matrix_si[2][2],
+            s.bearings[1].stiffness_matrix_si[2][2],
+        );
+        a * b / (a + b)
+    };
+    let kb = 0.5 * (kz(&s0) + kz(&s1));
+    let expect = ks * u * kb / (kb + ks);
+    assert!(df < ks * u && (df - expect).abs() < 2e-3 * expect, "{df} vs {expect}");
+}
+
+#[test]
+fn rigid_steel_preload_runs_away_at_18000_rpm() {
+    // Rigid (fixed-position) preload: the inner ring runs hotter than the
+    // outer, the interference and with it the preload and heat grow.
+    let sp = Spindle::seed_b("steel").unwrap();
+    match sp.steady_state(18_000.0) {
+        Err(Error::ThermalRunaway(msg)) => assert!(msg.contains("preload grew"), "{msg}"),
+        other => panic!("expected runaway, got {other:?}"),
+    }
+    // The same spindle with a spring preload settles.
+    assert!(spring_spindle("steel", 300.0).steady_state(18_000.0).is_ok());
+}
+
+#[test]
+fn grid_is_independent_of_thread_count() {
+    let sp = spring_spindle("hybrid", 300.0);
+    let run = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| spindle_grid(&sp, &[9_000.0], &[250.0, 400.0], &[300.0]))
+    };
+    let a = run(1);
+    let b = run(2);
+    for (x, y) in a.iter().zip(&b) {
+        assert_eq!(x.as_ref().unwrap(), y.as_ref().unwrap());
+    }
+}
+
+#[test]
+fn bad_input_is_rejected() {
+    let sp = spring_spindle("hybrid", 300.0);
+    assert!(matches!(sp.steady_state(-5.0), Err(Error::Config { .. })));
+    assert!(matches!(Spindle::seed_b("gold"), Err(Error::Config { .. })));
+    assert!(matches!(
+        sp.with_preload(Preload::Spring {
+            force_n: 300.0,
+            rate_n_per_m: -1.0
+        }),
+        Err(Error::Config { .. })
+    ));
+    assert!(optimal_preload(&sp, &[12_000.0], &[]).is_err());
+}
+
+#[test]
+fn optimal_preload_trades_stiffness_against_heat() {
+    let sp = spring_spindle("hybrid", 300.0).with_radial_load(500.0).unwrap();
+    let best = optimal_preload(&sp, &[12_000.0], &[200.0, 400.0, 600.0]).unwrap();
+    let b = &best[0];
+    // More preload: stiffer pair (less mechanical displacement under the
+    // working load) but more heat (more thermal displacement).
+    for w in b.scan.windows(2) {
+        assert!(w[1].mechanical_radial_displacement_m < w[0].mechanical_radial_displacement_m);
+        assert!(w[1].thermal_radial_displacement_m > w[0].thermal_radial_displacement_m);
+        assert!(w[1].bearing_heat_w > w[0].bearing_heat_w);
+    }
+    let min = b
+        .scan
+        .iter()
+        .map(|g| g.total_radial_displacement_m())
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(b.min_radial_displacement_m, min);
+    assert!(b
+        .scan
+        .iter()
+        .any(|g| g.preload_n == b.optimal_preload_n && g.total_radial_displacement_m() == min));
+}
