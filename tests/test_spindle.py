@@ -6,6 +6,7 @@ import math
 
 import polars as pl
 import pytest
+
 import thermobear as tb
 
 

@@ -8,11 +8,12 @@ from pathlib import Path
 
 import polars as pl
 import pytest
-from thermobear.demo import STUDIES
+
+from thermobear.demo import STUDIES, study_function
 
 
 def test_seed_b_spindle_study_quick(tmp_path: Path) -> None:
-    fn = dict(STUDIES)["seed_b_spindle"]
+    fn = study_function(dict(STUDIES)["seed_b_spindle"])
     files = fn(tmp_path, True)
     assert all(f.exists() for f in files)
     assert any(f.name == "seed_b_fig4_transient.png" for f in files)
