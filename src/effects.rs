@@ -27,11 +27,13 @@ pub enum Effect {
     ThermalExpansionHousing = 7,
     /// Lubricant viscosity evaluated at the operating temperature (ASTM D341).
     TemperatureDependentViscosity = 8,
+    /// Spin friction heat at the ball-raceway contacts.
+    SpinFriction = 9,
 }
 
 impl Effect {
     /// Every effect, in registry order.
-    pub const ALL: [Effect; 9] = [
+    pub const ALL: [Effect; 10] = [
         Effect::CentrifugalForce,
         Effect::GyroscopicMoment,
         Effect::RingCentrifugalExpansion,
@@ -41,6 +43,7 @@ impl Effect {
         Effect::ThermalExpansionBalls,
         Effect::ThermalExpansionHousing,
         Effect::TemperatureDependentViscosity,
+        Effect::SpinFriction,
     ];
 
     /// The public name.
@@ -55,6 +58,7 @@ impl Effect {
             Effect::ThermalExpansionBalls => "thermal_expansion_balls",
             Effect::ThermalExpansionHousing => "thermal_expansion_housing",
             Effect::TemperatureDependentViscosity => "temperature_dependent_viscosity",
+            Effect::SpinFriction => "spin_friction",
         }
     }
 
@@ -85,6 +89,9 @@ impl Effect {
             }
             Effect::TemperatureDependentViscosity => {
                 "oil viscosity at the operating temperature in the viscous friction moment (ASTM D341, A-21)"
+            }
+            Effect::SpinFriction => {
+                "spin friction heat (3/8) mu_s Q a E |omega_s| per ball-raceway contact (A-22, A-23)"
             }
         }
     }

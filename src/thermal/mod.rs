@@ -8,6 +8,7 @@
 //! [`heat::bearing_heat`], [`network::SteadySolver::solve`] with a warm
 //! start, [`expansion::thermal_offsets`] back to the groove-centre geometry.
 
+pub mod coupled;
 pub mod expansion;
 pub mod heat;
 pub mod lubricant;
