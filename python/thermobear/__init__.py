@@ -19,6 +19,7 @@ from .errors import (
     ThermalRunawayError,
     ThermobearError,
 )
+from .thermal import ThermalState, thermal_state
 
 __version__: str = _native.__version__
 
@@ -41,6 +42,7 @@ __all__ = [
     "DataError",
     "Material",
     "ThermalRunawayError",
+    "ThermalState",
     "ThermobearError",
     "effects",
     "load_config",
@@ -48,4 +50,5 @@ __all__ = [
     "seed_config",
     "seed_config_names",
     "stiffness_curve",
+    "thermal_state",
 ]

@@ -3,7 +3,7 @@
 SI inside; every argument name carries its unit. Arrays are float64 numpy.
 """
 
-from typing import Callable, Optional, Sequence
+from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 import numpy.typing as npt
@@ -117,6 +117,37 @@ def stiffness_curve(
     radial_n: float,
     moment_nmm: float,
     effects: Optional[Sequence[str]] = None,
+    raceway_control: str = "outer",
+    misalignment_rad: Optional[float] = 0.0,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> dict[str, npt.NDArray[np.float64]]: ...
+def thermal_state(
+    bearing: Bearing,
+    speed_rpm: float,
+    axial_n: float,
+    radial_n: float,
+    effects: Optional[Sequence[str]] = None,
+    lubricant: str = "e-drive ATF",
+    lubrication_factor_f0: float = 1.0,
+    spin_friction: float = 0.06,
+    oil_air_temperature_c: float = 28.0,
+    ambient_temperature_c: float = 26.0,
+    housing_material: Optional[Material] = None,
+    raceway_control: str = "outer",
+    misalignment_rad: Optional[float] = 0.0,
+) -> dict[str, Any]: ...
+def thermal_stiffness_curve(
+    bearing: Bearing,
+    speeds_rpm: npt.NDArray[np.float64],
+    axial_n: float,
+    radial_n: float,
+    effects: Optional[Sequence[str]] = None,
+    lubricant: str = "e-drive ATF",
+    lubrication_factor_f0: float = 1.0,
+    spin_friction: float = 0.06,
+    oil_air_temperature_c: float = 28.0,
+    ambient_temperature_c: float = 26.0,
+    housing_material: Optional[Material] = None,
     raceway_control: str = "outer",
     misalignment_rad: Optional[float] = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,

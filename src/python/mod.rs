@@ -7,12 +7,14 @@ pub mod bearing;
 pub mod errors;
 pub mod parallel;
 pub mod solve;
+pub mod thermal;
 
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
     bearing::register(m)?;
     solve::register(m)?;
+    thermal::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
