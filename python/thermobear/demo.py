@@ -15,6 +15,7 @@ import numpy as np
 
 from .bearing import Bearing, stiffness_curve
 from .config import load_config, seed_config
+from .studies_seed_a import study_seed_a_thermal
 
 
 def _toml(text: str) -> dict:
@@ -145,6 +146,7 @@ def study_seed_b_bearing(out: Path, quick: bool = False) -> list[Path]:
 STUDIES: list[tuple[str, Callable[[Path, bool], list[Path]]]] = [
     ("seed_a_bearing", study_seed_a_bearing),
     ("seed_b_bearing", study_seed_b_bearing),
+    ("seed_a_thermal", study_seed_a_thermal),
 ]
 
 

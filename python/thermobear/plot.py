@@ -159,3 +159,6 @@ def regime_map(
     ax.set_xlabel(x.replace("_", " "))
     ax.set_ylabel(y.replace("_", " "))
     return ax
+
+
+from .plot_thermal import heat_vs_speed, node_temperatures, thermal_deformations  # noqa: E402, F401
