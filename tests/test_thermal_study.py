@@ -1,7 +1,6 @@
 """The seed A thermal demo study (quick mode) writes its tables and figures."""
 
 import polars as pl
-
 from thermobear.demo import STUDIES
 from thermobear.studies_seed_a import study_seed_a_thermal
 
