@@ -152,3 +152,22 @@ def thermal_stiffness_curve(
     misalignment_rad: Optional[float] = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
+def seed_a_network_links(
+    bearing: Bearing,
+    speed_rpm: float,
+    lubricant: str = "e-drive ATF",
+    oil_air_temperature_c: float = 28.0,
+    ambient_temperature_c: float = 26.0,
+    housing_material: Optional[Material] = None,
+) -> dict[str, Any]: ...
+def seed_a_steady_temperatures(
+    bearing: Bearing,
+    speed_rpm: float,
+    inner_ring_w: float,
+    balls_w: float,
+    outer_ring_w: float,
+    lubricant: str = "e-drive ATF",
+    oil_air_temperature_c: float = 28.0,
+    ambient_temperature_c: float = 26.0,
+    housing_material: Optional[Material] = None,
+) -> dict[str, Any]: ...

@@ -235,7 +235,127 @@ pub fn thermal_stiffness_curve<'py>(
     Ok(d)
 }
 
+fn seed_a_params(
+    bearing: &Bearing,
+    lubricant: &str,
+    oil_air_temperature_c: f64,
+    ambient_temperature_c: f64,
+    housing_material: Option<PyMaterial>,
+) -> Result<SeedAParams> {
+    let mut p = SeedAParams::for_bearing(bearing);
+    p.lubricant = Lubricant::preset(lubricant)?;
+    p.oil_air_temperature_c = finite("oil_air_temperature_c", oil_air_temperature_c)?;
+    p.ambient_temperature_c = finite("ambient_temperature_c", ambient_temperature_c)?;
+    if let Some(m) = housing_material {
+        p.housing = m.inner;
+    }
+    Ok(p)
+}
+
+/// The seed A network at `speed_rpm` as plain numbers (for independent
+/// solvers): node names, fixed temperatures (boundaries) and per link
+/// `(name, a, b, conductance_w_per_k, natural_w_per_k125)`, the flow a -> b
+/// being `G dT + N |dT|^0.25 dT`.
+#[pyfunction]
+#[pyo3(signature = (bearing, speed_rpm, lubricant="e-drive ATF".to_string(), oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None))]
+pub fn seed_a_network_links<'py>(
+    py: Python<'py>,
+    bearing: &PyBearing,
+    speed_rpm: f64,
+    lubricant: String,
+    oil_air_temperature_c: f64,
+    ambient_temperature_c: f64,
+    housing_material: Option<PyMaterial>,
+) -> PyResult<Bound<'py, PyDict>> {
+    use crate::thermal::network::{Convection, LinkKind, NodeKind};
+    let b = &bearing.inner;
+    let p = seed_a_params(
+        b,
+        &lubricant,
+        oil_air_temperature_c,
+        ambient_temperature_c,
+        housing_material,
+    )
+    .py_err()?;
+    let net = crate::thermal::presets::seed_a_network(b, &p).py_err()?;
+    let w = crate::units::rpm_to_rad_s(crate::error::non_negative("speed_rpm", speed_rpm).py_err()?);
+    let d = PyDict::new(py);
+    let nodes = net.network.nodes();
+    d.set_item("node", nodes.iter().map(|n| n.name.clone()).collect::<Vec<_>>())?;
+    let fixed = PyDict::new(py);
+    for n in nodes {
+        if let NodeKind::Boundary { temperature_c } = n.kind {
+            fixed.set_item(n.name.clone(), temperature_c)?;
+        }
+    }
+    d.set_item("boundary_temperature_c", fixed)?;
+    let links: Vec<(String, usize, usize, f64, f64)> = net
+        .network
+        .links()
+        .iter()
+        .map(|l| match &l.kind {
+            LinkKind::Conduction { conductance_w_per_k } => (l.name.clone(), l.a, l.b, *conductance_w_per_k, 0.0),
+            LinkKind::Convection { area_m2, law } => match law {
+                Convection::Natural { coefficient_w_m2_k125 } => {
+                    (l.name.clone(), l.a, l.b, 0.0, coefficient_w_m2_k125 * area_m2)
+                }
+                other => (l.name.clone(), l.a, l.b, other.h_w_m2k(0.0, w) * area_m2, 0.0),
+            },
+        })
+        .collect();
+    d.set_item("links", links)?;
+    Ok(d)
+}
+
+/// Steady temperatures of the seed A network (Newton) for the heat on the
+/// inner raceway, balls and outer raceway nodes [W] at `speed_rpm`.
+#[pyfunction]
+#[pyo3(signature = (bearing, speed_rpm, inner_ring_w, balls_w, outer_ring_w, lubricant="e-drive ATF".to_string(), oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn seed_a_steady_temperatures<'py>(
+    py: Python<'py>,
+    bearing: &PyBearing,
+    speed_rpm: f64,
+    inner_ring_w: f64,
+    balls_w: f64,
+    outer_ring_w: f64,
+    lubricant: String,
+    oil_air_temperature_c: f64,
+    ambient_temperature_c: f64,
+    housing_material: Option<PyMaterial>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let b = &bearing.inner;
+    let p = seed_a_params(
+        b,
+        &lubricant,
+        oil_air_temperature_c,
+        ambient_temperature_c,
+        housing_material,
+    )
+    .py_err()?;
+    let t = py
+        .detach(|| -> Result<Vec<f64>> {
+            let net = crate::thermal::presets::seed_a_network(b, &p)?;
+            let split = crate::thermal::HeatSplit {
+                inner_ring_w: finite("inner_ring_w", inner_ring_w)?,
+                balls_w: finite("balls_w", balls_w)?,
+                outer_ring_w: finite("outer_ring_w", outer_ring_w)?,
+            };
+            let w = crate::units::rpm_to_rad_s(crate::error::non_negative("speed_rpm", speed_rpm)?);
+            let mut solver = crate::thermal::SteadySolver::new(net.network.clone());
+            Ok(solver.solve(&net.sources_w(&split), w)?.temperatures_c)
+        })
+        .py_err()?;
+    let d = PyDict::new(py);
+    let p2 = crate::thermal::presets::seed_a_network(b, &p).py_err()?;
+    d.set_item("node", p2.network.names().iter().cloned().collect::<Vec<_>>())?;
+    d.set_item("temperature_c", t.into_pyarray(py))?;
+    Ok(d)
+}
+
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(seed_a_network_links, m)?)?;
+    m.add_function(wrap_pyfunction!(seed_a_steady_temperatures, m)?)?;
     m.add_function(wrap_pyfunction!(thermal_state, m)?)?;
     m.add_function(wrap_pyfunction!(thermal_stiffness_curve, m)?)?;
     Ok(())
