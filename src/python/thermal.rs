@@ -33,13 +33,13 @@ impl Settings {
     fn build(self, bearing: &Bearing) -> Result<CoupledBearing> {
         let mut solve = solve_options(self.effects, &self.raceway_control)?;
         solve.tilt = tilt_option(self.misalignment_rad, 0.0)?;
-        let mut p = SeedAParams::for_bearing(bearing);
-        p.lubricant = Lubricant::preset(&self.lubricant)?;
-        p.oil_air_temperature_c = finite("oil_air_temperature_c", self.oil_air_temperature_c)?;
-        p.ambient_temperature_c = finite("ambient_temperature_c", self.ambient_temperature_c)?;
-        if let Some(m) = self.housing_material {
-            p.housing = m.inner;
-        }
+        let p = seed_a_params(
+            bearing,
+            &self.lubricant,
+            self.oil_air_temperature_c,
+            self.ambient_temperature_c,
+            self.housing_material,
+        )?;
         let mounting = seed_a_mounting(&p);
         let options = CoupledOptions {
             solve,
