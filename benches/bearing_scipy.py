@@ -15,8 +15,9 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import thermobear as tb  # noqa: E402
 from reference_bearing import ReferenceBearing  # noqa: E402
+
+import thermobear as tb  # noqa: E402
 
 FA, FR, SPEED = 2680.9, 1189.9, 16000.0
 

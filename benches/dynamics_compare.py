@@ -8,8 +8,16 @@ Runs: NumPy fixed-step RK4 (64 steps per mesh period), SciPy solve_ivp
 ns per step and the ratio to Rust. Seed-A parameters (Table 3) and the
 defaults of HelicalPairParams::seed_a().
 
-Usage: python3 benches/dynamics_compare.py [--rust-steps N]
+Also times the same model through the Python binding (thermobear.bifurcation,
+computed seed mesh/bearing stiffness, GIL released, rayon threads): wall
+time per RK4 step for an independent sweep (lock-step lanes across speeds)
+and an accelerating (continuation, one lane) sweep, and with --full-set the
+seed diagram set (1001 speeds x 2 or 3 stiffness cases x up/down, 300 + 100
+periods, 64 steps per period).
+
+Usage: python3 benches/dynamics_compare.py [--rust-steps N] [--full-set]
 """
+
 import math
 import subprocess
 import sys
@@ -31,7 +39,10 @@ def seed_a():
     beta = math.radians(31.2)
     alpha_t = math.atan(math.tan(math.radians(16.5)) / math.cos(beta))
     mn = 1.537e-3
-    rb = lambda z: z * mn / (2 * math.cos(beta)) * math.cos(alpha_t)
+
+    def rb(z):
+        return z * mn / (2 * math.cos(beta)) * math.cos(alpha_t)
+
     rp, rg = rb(29), rb(78)
     mp, mg, ip, ig = 1.201, 3.1, 1.152e-4, 1.6e-3
     kr, ka, zb = 2.0e8, 5.0e7, 0.02
@@ -165,6 +176,44 @@ def rust_ns(steps):
     return float(vals["ns_per_step"]), float(vals.get("batch_ns_per_lane_step", "nan"))
 
 
+def binding_ns(full_set=False):
+    """Wall ns per RK4 step through thermobear.bifurcation (no Lyapunov runs)."""
+    try:
+        import thermobear as tb
+    except ImportError as exc:  # pragma: no cover
+        print(f"python binding unavailable: {exc}")
+        return []
+    g = tb.GearPair.preset("seed-electric-drive")
+    sys_c = tb.GearSystem(g, stiffness="constant")
+    tr, rec, spp = 300, 100, 64
+    rows = []
+    for direction, n in (("independent", 64), ("up", 16)):
+        speeds = np.linspace(6500.0, 16500.0, n)
+        t0 = time.perf_counter()
+        tb.bifurcation(sys_c, speeds, direction, tr, rec, spp, lyapunov_periods=0)
+        dt = time.perf_counter() - t0
+        rows.append(
+            (f"binding sweep {direction} (wall, all threads)", dt / (n * (tr + rec) * spp) * 1e9)
+        )
+    if full_set:
+        systems = {}
+        for case in ("constant", "speed", "thermal"):
+            try:
+                systems[case] = tb.GearSystem(g, stiffness=case)
+            except tb.ConfigError:
+                print(f"stiffness case {case!r} unavailable in this build: skipped")
+        speeds = np.linspace(6500.0, 16500.0, 1001)
+        t0 = time.perf_counter()
+        tb.bifurcation_set(systems, speeds, ("up", "down"), tr, rec, spp)
+        dt = time.perf_counter() - t0
+        jobs = 2 * len(systems)
+        print(f"seed diagram set via binding: {jobs} sweeps x 1001 speeds in {dt:.2f} s wall")
+        rows.append(
+            ("binding seed set (wall, all threads)", dt / (jobs * 1001 * (tr + rec) * spp) * 1e9)
+        )
+    return rows
+
+
 def main():
     steps = 5_000_000
     if "--rust-steps" in sys.argv:
@@ -183,6 +232,7 @@ def main():
         rows.append(("numba RK4", numba_rk4(p, 2_000_000)))
     else:
         print("numba not importable: skipped")
+    rows += binding_ns("--full-set" in sys.argv)
     if rust is not None:
         print(f"{'rust RK4 scalar':48s} {rust:12.1f} ns/step")
         print(f"{'rust RK4 lock-step (per lane)':48s} {rust_batch:12.1f} ns/step")

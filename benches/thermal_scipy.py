@@ -11,8 +11,9 @@ from __future__ import annotations
 import time
 
 import numpy as np
-import thermobear as tb
 from scipy.optimize import fsolve
+
+import thermobear as tb
 from thermobear import _native
 
 SPEED = 12_000.0

@@ -1,11 +1,11 @@
 //! The seed's bifurcation diagram set (A, Figs. 14-15): 1001 speeds from
-//! 6,500 to 16,500 rpm x 3 bearing-stiffness cases x up/down continuation,
+//! 6,500 to 16,500 rpm x 2 bearing-stiffness cases x up/down continuation,
 //! 300 transient + 100 recorded mesh periods, 64 RK4 steps per mesh period,
 //! on a 2-thread rayon pool; then a small torque x speed regime map.
 //!
-//! The three bearing schedules are illustrative placeholders (constant;
-//! speed-softened radial stiffness; thermal: stiffer axially, softer
-//! radially, the trend A reports) until the bearing module supplies them.
+//! Mesh and bearing stiffness are computed (src/dynamics/seed.rs): the
+//! constant and speed-dependent 6208 cases; the thermal case needs the
+//! thermal module's stiffness curve and is run from Python.
 //!
 //! Usage: cargo run --release --example seed_diagrams [speeds] [threads]
 
@@ -66,16 +66,22 @@ fn main() -> thermobear::Result<()> {
     let args: Vec<String> = std::env::args().collect();
     let n: usize = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1001);
     let threads: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(2);
-    let pair = HelicalPair::new(HelicalPairParams::seed_a())?;
+    // Computed wiring (src/dynamics/seed.rs): potential-energy mesh stiffness
+    // in the normal direction, two 6208 per shaft in parallel under the seed
+    // loads; the thermal case comes from the thermal module (Python side).
+    let defaults = GearSystemDefaults::default();
+    let pair = HelicalPair::new(seed_a_params(&defaults)?)?;
+    let bearing = thermobear::Bearing::preset("6208")?;
+    let (fa, fr) = seed_bearing_loads(100.0)?;
+    let grid: Vec<f64> = (0..=44).map(|i| 6000.0 + 250.0 * i as f64).collect();
     let cases = [
-        ("constant", BearingSchedule::constant(2.0e8, 5.0e7)?),
         (
-            "speed, no thermal",
-            BearingSchedule::new(vec![(6500.0, 2.0e8, 5.0e7), (16500.0, 1.8e8, 4.6e7)])?,
+            "constant",
+            bearing_schedule(&bearing, BearingCase::Constant, &grid, fa, fr, 2)?,
         ),
         (
-            "speed + thermal",
-            BearingSchedule::new(vec![(6500.0, 1.9e8, 5.6e7), (16500.0, 1.75e8, 5.3e7)])?,
+            "speed, no thermal",
+            bearing_schedule(&bearing, BearingCase::Speed, &grid, fa, fr, 2)?,
         ),
     ];
     let models: Vec<HelicalSweep> = cases
@@ -120,7 +126,7 @@ fn main() -> thermobear::Result<()> {
     let torques = [5.0, 10.0, 20.0, 50.0, 100.0];
     let map_speeds: Vec<f64> = (0..21).map(|i| 6500.0 + 500.0 * i as f64).collect();
     for damping in [MeshDamping::InContact, MeshDamping::Always] {
-        let mut p = HelicalPairParams::seed_a();
+        let mut p = seed_a_params(&defaults)?;
         p.mesh_damping = damping;
         let base = HelicalSweep {
             pair: HelicalPair::new(p)?,

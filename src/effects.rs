@@ -27,13 +27,16 @@ pub enum Effect {
     ThermalExpansionHousing = 7,
     /// Lubricant viscosity evaluated at the operating temperature (ASTM D341).
     TemperatureDependentViscosity = 8,
+    /// Unbalanced magnetic pull of the eccentric motor rotor: negative
+    /// radial stiffness and static pull (src/rotor/magnetic_pull.rs).
+    UnbalancedMagneticPull = 9,
     /// Spin friction heat at the ball-raceway contacts.
-    SpinFriction = 9,
+    SpinFriction = 10,
 }
 
 impl Effect {
     /// Every effect, in registry order.
-    pub const ALL: [Effect; 10] = [
+    pub const ALL: [Effect; 11] = [
         Effect::CentrifugalForce,
         Effect::GyroscopicMoment,
         Effect::RingCentrifugalExpansion,
@@ -43,6 +46,7 @@ impl Effect {
         Effect::ThermalExpansionBalls,
         Effect::ThermalExpansionHousing,
         Effect::TemperatureDependentViscosity,
+        Effect::UnbalancedMagneticPull,
         Effect::SpinFriction,
     ];
 
@@ -58,6 +62,7 @@ impl Effect {
             Effect::ThermalExpansionBalls => "thermal_expansion_balls",
             Effect::ThermalExpansionHousing => "thermal_expansion_housing",
             Effect::TemperatureDependentViscosity => "temperature_dependent_viscosity",
+            Effect::UnbalancedMagneticPull => "unbalanced_magnetic_pull",
             Effect::SpinFriction => "spin_friction",
         }
     }
@@ -89,6 +94,9 @@ impl Effect {
             }
             Effect::TemperatureDependentViscosity => {
                 "oil viscosity at the operating temperature in the viscous friction moment (ASTM D341, A-21)"
+            }
+            Effect::UnbalancedMagneticPull => {
+                "unbalanced magnetic pull of the eccentric motor rotor in its air gap (negative stiffness, static pull)"
             }
             Effect::SpinFriction => {
                 "spin friction heat (3/8) mu_s Q a E |omega_s| per ball-raceway contact (A-22, A-23)"

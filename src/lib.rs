@@ -18,6 +18,7 @@ pub mod effects;
 pub mod error;
 pub mod gear;
 pub mod materials;
+pub mod rotor;
 pub mod thermal;
 pub mod units;
 

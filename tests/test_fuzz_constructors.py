@@ -4,9 +4,10 @@ another exception type)."""
 
 import math
 
-import thermobear as tb
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+import thermobear as tb
 
 floats = st.one_of(
     st.floats(allow_nan=True, allow_infinity=True, width=64),

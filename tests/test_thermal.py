@@ -2,6 +2,7 @@
 
 import numpy as np
 import pytest
+
 import thermobear as tb
 from thermobear.thermal import THERMAL_EFFECTS
 
@@ -37,6 +38,9 @@ def test_heat_balance(b6208):
 def test_zero_heat_limit_equals_isothermal(b6208):
     eff = _effects_without_thermal()
     s = tb.thermal_state(b6208, speed_rpm=9_000, axial_n=FA, radial_n=FR, effects=eff)
+    full = b6208.solve(axial_n=FA, radial_n=FR, speed_rpm=9_000, effects=eff)
+    np.testing.assert_array_equal(s.solution.stiffness, full.stiffness)
+    np.testing.assert_array_equal(s.solution.displacement, full.displacement)
     iso = tb.stiffness_curve(b6208, [9_000.0], FA, FR, mode="speed", effects=eff)
     k = s.solution.stiffness
     assert k[0, 0] == iso["k_xx_n_per_m"][0] and k[2, 2] == iso["k_zz_n_per_m"][0]
@@ -108,6 +112,7 @@ def test_dispatch_to_objects_with_thermal_state():
 def test_network_newton_agrees_with_scipy_fsolve(b6208):
     # Two independent solvers of the same seed A node balances (Fig. 7).
     from scipy.optimize import fsolve
+
     from thermobear import _native
 
     net = _native.seed_a_network_links(b6208._b, 10_000.0)

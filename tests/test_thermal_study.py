@@ -1,12 +1,13 @@
 """The seed A thermal demo study (quick mode) writes its tables and figures."""
 
 import polars as pl
-from thermobear.demo import STUDIES
+
+from thermobear.demo import STUDIES, study_function
 from thermobear.studies_seed_a import study_seed_a_thermal
 
 
 def test_seed_a_thermal_study(tmp_path):
-    assert ("seed_a_thermal", study_seed_a_thermal) in STUDIES
+    assert study_function(dict(STUDIES)["seed_a_thermal"]) is study_seed_a_thermal
     files = study_seed_a_thermal(tmp_path, quick=True)
     assert all(f.exists() for f in files)
     t = pl.read_parquet(tmp_path / "paper_vs_thermobear_seed_a.parquet")

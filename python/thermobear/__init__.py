@@ -19,6 +19,17 @@ from .errors import (
     ThermalRunawayError,
     ThermobearError,
 )
+from .gear import (
+    GearPair,
+    GearSystem,
+    bifurcation,
+    bifurcation_set,
+    gear_defaults,
+    largest_lyapunov,
+    regime_map,
+    regimes,
+)
+from .rotor import campbell, critical_speeds, spectrum, spectrum_orders, vibration
 from .thermal import ThermalState, thermal_state
 
 __version__: str = _native.__version__
@@ -35,18 +46,31 @@ def effects() -> "polars.DataFrame":  # noqa: F821
 from . import plot  # noqa: E402  (plot imports matplotlib lazily)
 
 __all__ = [
+    "campbell",
+    "critical_speeds",
+    "spectrum",
+    "spectrum_orders",
+    "vibration",
     "Bearing",
     "BearingSolution",
     "ConfigError",
     "ConvergenceError",
     "DataError",
+    "GearPair",
+    "GearSystem",
     "Material",
     "ThermalRunawayError",
     "ThermalState",
     "ThermobearError",
+    "bifurcation",
+    "bifurcation_set",
     "effects",
+    "gear_defaults",
+    "largest_lyapunov",
     "load_config",
     "plot",
+    "regime_map",
+    "regimes",
     "seed_config",
     "seed_config_names",
     "stiffness_curve",

@@ -107,6 +107,13 @@ class Bearing:
         raceway_control: str = "outer",
         misalignment_rad: Optional[float] = 0.0,
     ) -> dict: ...
+    def ring_forces(
+        self,
+        displacement: Sequence[float],
+        speed_rpm: float,
+        effects: Optional[Sequence[str]] = None,
+        raceway_control: str = "outer",
+    ) -> dict: ...
 
 def effects() -> list[tuple[str, str]]: ...
 def check_config(text: str) -> list[str]: ...
@@ -121,6 +128,172 @@ def stiffness_curve(
     misalignment_rad: Optional[float] = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
+
+# ---- helical gear pair dynamics (src/python/gear.rs) ----
+
+class GearPair:
+    @staticmethod
+    def preset(name: str) -> GearPair: ...
+    @staticmethod
+    def preset_names() -> list[str]: ...
+    @staticmethod
+    def from_table(
+        pinion_teeth: int,
+        gear_teeth: int,
+        normal_module_mm: float,
+        normal_pressure_angle_deg: float,
+        helix_angle_deg: float,
+        face_width_mm: float,
+        youngs_modulus_mpa: float,
+        poisson_ratio: float,
+        density_t_per_mm3: float,
+        mass_kg: tuple[float, float],
+        polar_inertia_t_mm2: tuple[float, float],
+        input_torque_nm: float,
+        profile_shift_coeff: tuple[float, float] = (0.0, 0.0),
+        addendum_coeff: float = 1.0,
+        dedendum_coeff: float = 1.25,
+    ) -> GearPair: ...
+    def typo_warnings(self) -> list[dict]: ...
+    def geometry(self) -> dict[str, float]: ...
+    def iso_stiffness(self) -> dict[str, float]: ...
+    def mesh_stiffness(
+        self, points: int = 64, model: str = "potential-energy"
+    ) -> dict[str, npt.NDArray[np.float64]]: ...
+    def mesh_frequency_hz(self, speed_rpm: float) -> float: ...
+
+class GearSystem:
+    def __init__(
+        self,
+        gear: GearPair,
+        speeds_rpm: Sequence[float],
+        radial_stiffness_n_per_m: Sequence[float],
+        axial_stiffness_n_per_m: Sequence[float],
+        *,
+        half_backlash_um: float = 50.0,
+        mesh_damping_ratio: float = 0.07,
+        mesh_damping: str = "in-contact",
+        bearing_damping_ratio: float = 0.02,
+        te_amplitude_um: float = 2.0,
+        torque_nm: Optional[float] = None,
+        table_points: int = 64,
+        mesh_model: str = "potential-energy",
+    ) -> None: ...
+    @property
+    def mesh_model(self) -> str: ...
+    def params(self) -> dict[str, float]: ...
+    def schedule(self) -> tuple[list[float], list[float], list[float]]: ...
+    def bearing_stiffness_at(self, speed_rpm: float) -> tuple[float, float]: ...
+    def mass_diagonal_kg(self, speed_rpm: float) -> list[float]: ...
+    def stiffness_matrix(
+        self, speed_rpm: float, mesh_stiffness_n_per_m: float
+    ) -> list[list[float]]: ...
+    def natural_frequencies_hz(
+        self, speed_rpm: float, mesh_stiffness_n_per_m: float
+    ) -> list[float]: ...
+    def projection(self) -> list[float]: ...
+    def static_state_m(self, speed_rpm: float) -> list[float]: ...
+    def mesh_period_s(self, speed_rpm: float) -> float: ...
+    def check_steps(self, speed_rpm: float, steps_per_period: int) -> None: ...
+    def mesh_tables(self) -> dict[str, npt.NDArray[np.float64]]: ...
+
+def bifurcation(
+    system: GearSystem,
+    speeds_rpm: npt.NDArray[np.float64],
+    direction: str = "up",
+    transient_periods: int = 300,
+    record_periods: int = 100,
+    steps_per_period: int = 64,
+    lyapunov_periods: int = 100,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> dict: ...
+def bifurcation_many(
+    systems: Sequence[GearSystem],
+    directions: Sequence[str],
+    speeds_rpm: npt.NDArray[np.float64],
+    transient_periods: int = 300,
+    record_periods: int = 100,
+    steps_per_period: int = 64,
+    lyapunov_periods: int = 100,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> list[dict]: ...
+def regime_map(
+    system: GearSystem,
+    torques_nm: Sequence[float],
+    te_scales: Sequence[float],
+    speeds_rpm: npt.NDArray[np.float64],
+    transient_periods: int = 300,
+    record_periods: int = 100,
+    steps_per_period: int = 64,
+    lyapunov_periods: int = 100,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> dict: ...
+def largest_lyapunov_reference(
+    name: str,
+    time: Optional[float] = None,
+    step: Optional[float] = None,
+    transient_time: Optional[float] = None,
+    method: str = "benettin",
+) -> float: ...
+def largest_lyapunov_gear(
+    system: GearSystem,
+    speed_rpm: float,
+    periods: int = 200,
+    transient_periods: int = 300,
+    steps_per_period: int = 64,
+) -> float: ...
+def gear_bearing_schedule(
+    bearing: Bearing,
+    case: str,
+    speeds_rpm: Sequence[float],
+    axial_n: float,
+    radial_n: float,
+    bearings_per_shaft: int = 2,
+) -> tuple[list[float], list[float], list[float]]: ...
+def seed_gear_bearing_loads(torque_nm: float) -> tuple[float, float]: ...
+def gear_defaults() -> dict[str, float]: ...
+def rotor_campbell(
+    row_material: str,
+    preload_n: float,
+    speeds_rpm: npt.NDArray[np.float64],
+    modes: int = 8,
+    effects: Optional[Sequence[str]] = None,
+    offsets: Optional[dict[str, list[float]]] = None,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> dict[str, Any]: ...
+def rotor_critical_speeds(
+    row_material: str,
+    preload_n: float,
+    speeds_rpm: npt.NDArray[np.float64],
+    modes: int = 8,
+    harmonic: float = 1.0,
+    effects: Optional[Sequence[str]] = None,
+    offsets: Optional[dict[str, list[float]]] = None,
+) -> dict[str, Any]: ...
+def rotor_vibration(
+    row_material: str,
+    preload_n: float,
+    speeds_rpm: npt.NDArray[np.float64],
+    unbalance_grade: Optional[float] = None,
+    unbalance_g_mm: Optional[float] = None,
+    method: str = "frequency",
+    duration_s: float = 0.1,
+    effects: Optional[Sequence[str]] = None,
+    offsets: Optional[dict[str, list[float]]] = None,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> dict[str, Any]: ...
+def rotor_spectrum(
+    row_material: str,
+    preload_n: float,
+    speed_rpm: float,
+    duration_s: float = 0.2,
+    nonlinear: bool = True,
+    unbalance_grade: Optional[float] = None,
+    unbalance_g_mm: Optional[float] = None,
+    effects: Optional[Sequence[str]] = None,
+    offsets: Optional[dict[str, list[float]]] = None,
+) -> dict[str, Any]: ...
+def rotor_default_effects() -> list[str]: ...
 def thermal_state(
     bearing: Bearing,
     speed_rpm: float,

@@ -288,6 +288,27 @@ class Bearing:
         )
         return BearingSolution(raw)
 
+    def ring_forces(
+        self,
+        displacement: Sequence[float],
+        speed_rpm: float = 0.0,
+        *,
+        effects: Optional[Sequence[str]] = None,
+        raceway_control: str = "outer",
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """The forward map used inside time integration: for a prescribed
+        inner-ring displacement ``[dx, dy, dz (m), theta_x, theta_y (rad)]``
+        return the reaction of the balls on the inner ring
+        ``[Fx, Fy, Fz (N), Mx, My (N m)]`` and the tangent stiffness
+        ``-d(reaction)/d(displacement)`` (5x5, SI)."""
+        q = [float(v) for v in np.asarray(displacement, dtype=float).ravel()]
+        if len(q) != 5:
+            from .errors import ConfigError
+
+            raise ConfigError(f"invalid displacement = {q}: needs 5 values [dx, dy, dz, tx, ty]")
+        raw = self._b.ring_forces(q, float(speed_rpm), _effects_arg(effects), raceway_control)
+        return np.asarray(raw["reaction_n_nm"]), np.asarray(raw["stiffness_matrix"])
+
     def __repr__(self) -> str:
         return repr(self._b)
 

@@ -15,7 +15,6 @@ import numpy as np
 
 from .bearing import Bearing, stiffness_curve
 from .config import load_config, seed_config
-from .studies_seed_a import study_seed_a_thermal
 
 
 def _toml(text: str) -> dict:
@@ -143,19 +142,31 @@ def study_seed_b_bearing(out: Path, quick: bool = False) -> list[Path]:
     return files
 
 
-STUDIES: list[tuple[str, Callable[[Path, bool], list[Path]]]] = [
-    ("seed_a_bearing", study_seed_a_bearing),
-    ("seed_b_bearing", study_seed_b_bearing),
-    ("seed_a_thermal", study_seed_a_thermal),
+# Each study: (name, "module:function") inside this package, imported when
+# run (study modules import the table/figure helpers from here).
+STUDIES: list[tuple[str, str]] = [
+    ("seed_a_bearing", "demo:study_seed_a_bearing"),
+    ("seed_b_bearing", "demo:study_seed_b_bearing"),
+    ("seed_a_gear", "studies_seed_a_gear:study_seed_a_gear"),
+    ("seed_b_vibration", "studies_seed_b_vibration:study_seed_b_vibration"),
+    ("seed_a_thermal", "studies_seed_a:study_seed_a_thermal"),
 ]
+
+
+def study_function(spec: str) -> Callable[[Path, bool], list[Path]]:
+    """Resolve a ``"module:function"`` study reference."""
+    import importlib
+
+    module, func = spec.split(":")
+    return getattr(importlib.import_module(f"thermobear.{module}"), func)
 
 
 def run_demo(out: Path, quick: bool = False) -> Path:
     """Run every study into ``out`` and return it."""
     out.mkdir(parents=True, exist_ok=True)
-    for name, fn in STUDIES:
+    for name, spec in STUDIES:
         t0 = time.perf_counter()
-        files = fn(out / name, quick)
+        files = study_function(spec)(out / name, quick)
         print(f"  {name}: {len(files)} files in {time.perf_counter() - t0:.1f} s", flush=True)
     return out
 

@@ -161,4 +161,5 @@ def regime_map(
     return ax
 
 
+from .plot_rotor import campbell, spectrum, vibration  # noqa: E402,F401  (rotor figures)
 from .plot_thermal import heat_vs_speed, node_temperatures, thermal_deformations  # noqa: E402, F401

@@ -13,6 +13,7 @@ pub mod integrate;
 pub mod lyapunov;
 pub mod ode;
 pub mod poincare;
+pub mod seed;
 
 pub use bifurcation::{
     regime_map, sweep, sweep_many, BearingSchedule, HelicalSweep, RegimeCell, SpeedPoint, SweepConfig, SweepDirection,
@@ -21,3 +22,4 @@ pub use bifurcation::{
 pub use classify::{ClassifyConfig, ImpactRegime, Motion};
 pub use gear_model::{BacklashOscillator, BearingSupport, GearBody, HelicalPair, HelicalPairParams, MeshDamping};
 pub use ode::{GridOde, OdeSystem, PeriodicTable};
+pub use seed::{bearing_schedule, helical_params, seed_a_params, seed_bearing_loads, BearingCase, GearSystemDefaults};

@@ -307,6 +307,46 @@ impl PyBearing {
         Ok(d)
     }
 
+    /// Solve one operating point; see `thermobear.Bearing.solve`.
+    #[pyo3(signature = (axial_n, radial_n, moment_nmm, speed_rpm, effects=None, raceway_control="outer", misalignment_rad=Some(0.0)))]
+    #[allow(clippy::too_many_arguments)]
+    fn solve<'py>(
+        &self,
+        py: Python<'py>,
+        axial_n: f64,
+        radial_n: f64,
+        moment_nmm: f64,
+        speed_rpm: f64,
+        effects: Option<Vec<String>>,
+        raceway_control: &str,
+        misalignment_rad: Option<f64>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        super::solve::solve_point(
+            py,
+            &self.inner,
+            axial_n,
+            radial_n,
+            moment_nmm,
+            speed_rpm,
+            effects,
+            raceway_control,
+            misalignment_rad,
+        )
+    }
+
+    /// Forces of the balls on the inner ring at a prescribed displacement.
+    #[pyo3(signature = (displacement, speed_rpm, effects=None, raceway_control="outer"))]
+    fn ring_forces<'py>(
+        &self,
+        py: Python<'py>,
+        displacement: [f64; 5],
+        speed_rpm: f64,
+        effects: Option<Vec<String>>,
+        raceway_control: &str,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        super::solve::ring_forces_point(py, &self.inner, displacement, speed_rpm, effects, raceway_control)
+    }
+
     fn __repr__(&self) -> String {
         format!(
             "Bearing({:?}, {}, {})",

@@ -5,7 +5,9 @@ use pyo3::prelude::*;
 
 pub mod bearing;
 pub mod errors;
+pub mod gear;
 pub mod parallel;
+pub mod rotor;
 pub mod solve;
 pub mod thermal;
 
@@ -14,6 +16,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
     bearing::register(m)?;
     solve::register(m)?;
+    gear::register(m)?;
+    rotor::register(m)?;
     thermal::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -158,6 +158,34 @@ pub fn tilt_option(misalignment_rad: Option<f64>, moment_nmm: f64) -> Result<Til
     }
 }
 
+/// The forward map: forces of the balls on the inner ring for a prescribed
+/// displacement [dx, dy, dz (m), theta_x, theta_y (rad)] at a speed.
+pub fn ring_forces_point<'py>(
+    py: Python<'py>,
+    bearing: &crate::bearing::Bearing,
+    displacement: [f64; 5],
+    speed_rpm: f64,
+    effects: Option<Vec<String>>,
+    raceway_control: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    for (i, v) in displacement.iter().enumerate() {
+        finite(&format!("displacement[{i}]"), *v).py_err()?;
+    }
+    let speed = check_speed(speed_rpm).py_err()?;
+    let opts = solve_options(effects, raceway_control).py_err()?;
+    let f = py
+        .detach(|| -> Result<_> {
+            let m = BearingModel::new(bearing)?;
+            m.ring_forces(&displacement, speed, &opts, &mut WarmStart::new())
+        })
+        .py_err()?;
+    let d = PyDict::new(py);
+    d.set_item("reaction_n_nm", f.reaction_n_nm.to_vec().into_pyarray(py))?;
+    let k: Vec<Vec<f64>> = f.stiffness_matrix_si.iter().map(|r| r.to_vec()).collect();
+    d.set_item("stiffness_matrix", PyArray2::from_vec2(py, &k)?)?;
+    Ok(d)
+}
+
 /// Stiffness and displacements against speed (see thermobear.stiffness_curve).
 #[pyfunction]
 #[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, moment_nmm, effects=None, raceway_control="outer", misalignment_rad=Some(0.0), progress=None))]
