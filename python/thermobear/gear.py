@@ -175,7 +175,7 @@ def gear_defaults() -> "polars.DataFrame":  # noqa: F821
     rows = [
         ("backlash_um", 2.0 * d["half_backlash_um"], "total clearance 2b; b = 50 um (not in A)"),
         ("mesh_damping_ratio", d["mesh_damping_ratio"], "usual 0.03-0.17 range (not in A)"),
-        ("mesh_damping", float("nan"), "in-contact only (A-46 as printed); 'always' offered"),
+        ("mesh_damping", None, "in-contact only (A-46 as printed); 'always' offered"),
         ("bearing_damping_ratio", d["bearing_damping_ratio"], "on body mass (not in A)"),
         ("te_amplitude_um", d["te_amplitude_um"], "first mesh harmonic (not in A)"),
         ("bearings_per_shaft", d["bearings_per_shaft"], "A Fig. 1; in parallel"),

@@ -84,8 +84,9 @@ def _paper_table(ours: dict) -> "polars.DataFrame":  # noqa: F821
     return pl.DataFrame(
         {
             "quantity": [r[0] for r in rows],
-            "paper": [float(r[1]) for r in rows],
-            "thermobear": [float(r[2]) for r in rows],
+            # "not given" / "not computed" is a null, never a NaN
+            "paper": [None if np.isnan(r[1]) else float(r[1]) for r in rows],
+            "thermobear": [None if np.isnan(r[2]) else float(r[2]) for r in rows],
             "note": [r[3] for r in rows],
         }
     )
