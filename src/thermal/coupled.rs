@@ -674,6 +674,31 @@ mod tests {
     }
 
     #[test]
+    fn runaway_rule_separates_warm_up_from_divergence() {
+        // A normal warm-up from the cold start: heat, temperatures and loads
+        // rise but each change is smaller than the last (contraction 0.3).
+        // A runaway: the same growth with changes that do not shrink.
+        let seq = |ratio: f64| -> Vec<Trend> {
+            let mut out = Vec::new();
+            let (mut t, mut d) = (40.0, 10.0);
+            for _ in 0..6 {
+                out.push(Trend {
+                    heat_w: 100.0 + t,
+                    hottest_c: t,
+                    max_load_n: 2000.0 + t,
+                    change_k: d,
+                });
+                t += d;
+                d *= ratio;
+            }
+            out
+        };
+        let grows = |v: &[Trend]| v.windows(2).filter(|w| w[1].all_grow(&w[0])).count();
+        assert_eq!(grows(&seq(0.3)), 0);
+        assert!(grows(&seq(1.2)) >= RUNAWAY_STREAK);
+    }
+
+    #[test]
     fn heat_rises_with_speed_and_preload() {
         // Seed A Fig. 6: heat rises with speed and with axial preload.
         let c = seed_a(EffectSet::all());
