@@ -30,11 +30,13 @@ pub enum Effect {
     /// Unbalanced magnetic pull of the eccentric motor rotor: negative
     /// radial stiffness and static pull (src/rotor/magnetic_pull.rs).
     UnbalancedMagneticPull = 9,
+    /// Spin friction heat at the ball-raceway contacts.
+    SpinFriction = 10,
 }
 
 impl Effect {
     /// Every effect, in registry order.
-    pub const ALL: [Effect; 10] = [
+    pub const ALL: [Effect; 11] = [
         Effect::CentrifugalForce,
         Effect::GyroscopicMoment,
         Effect::RingCentrifugalExpansion,
@@ -45,6 +47,7 @@ impl Effect {
         Effect::ThermalExpansionHousing,
         Effect::TemperatureDependentViscosity,
         Effect::UnbalancedMagneticPull,
+        Effect::SpinFriction,
     ];
 
     /// The public name.
@@ -60,6 +63,7 @@ impl Effect {
             Effect::ThermalExpansionHousing => "thermal_expansion_housing",
             Effect::TemperatureDependentViscosity => "temperature_dependent_viscosity",
             Effect::UnbalancedMagneticPull => "unbalanced_magnetic_pull",
+            Effect::SpinFriction => "spin_friction",
         }
     }
 
@@ -93,6 +97,9 @@ impl Effect {
             }
             Effect::UnbalancedMagneticPull => {
                 "unbalanced magnetic pull of the eccentric motor rotor in its air gap (negative stiffness, static pull)"
+            }
+            Effect::SpinFriction => {
+                "spin friction heat (3/8) mu_s Q a E |omega_s| per ball-raceway contact (A-22, A-23)"
             }
         }
     }

@@ -12,18 +12,6 @@ from __future__ import annotations
 from . import _native
 from .bearing import Bearing, BearingSolution, Material, stiffness_curve
 from .config import load_config, seed_config, seed_config_names
-from .spindle import (
-    Spindle,
-    compensation_preload,
-    optimal_preload,
-    spindle_grid,
-    transient,
-)
-
-try:  # the bearing thermal module (another branch) owns `thermal_state`
-    from .thermal import thermal_state  # type: ignore[attr-defined]
-except ImportError:  # pragma: no cover - depends on the merged modules
-    from .spindle import thermal_state
 from .errors import (
     ConfigError,
     ConvergenceError,
@@ -42,6 +30,14 @@ from .gear import (
     regimes,
 )
 from .rotor import campbell, critical_speeds, spectrum, spectrum_orders, vibration
+from .spindle import (
+    Spindle,
+    compensation_preload,
+    optimal_preload,
+    spindle_grid,
+    transient,
+)
+from .thermal import ThermalState, thermal_state
 
 __version__: str = _native.__version__
 
@@ -71,6 +67,7 @@ __all__ = [
     "GearSystem",
     "Material",
     "ThermalRunawayError",
+    "ThermalState",
     "ThermobearError",
     "bifurcation",
     "bifurcation_set",

@@ -348,3 +348,54 @@ class Spindle:
         spring_rate_n_per_um: float,
         progress: Callable[[int, int], Any] | None = None,
     ) -> dict[str, list[float]]: ...
+
+def thermal_state(
+    bearing: Bearing,
+    speed_rpm: float,
+    axial_n: float,
+    radial_n: float,
+    effects: Optional[Sequence[str]] = None,
+    lubricant: str = "e-drive ATF",
+    lubrication_factor_f0: float = 1.0,
+    spin_friction: float = 0.06,
+    oil_air_temperature_c: float = 28.0,
+    ambient_temperature_c: float = 26.0,
+    housing_material: Optional[Material] = None,
+    raceway_control: str = "outer",
+    misalignment_rad: Optional[float] = 0.0,
+) -> dict[str, Any]: ...
+def thermal_stiffness_curve(
+    bearing: Bearing,
+    speeds_rpm: npt.NDArray[np.float64],
+    axial_n: float,
+    radial_n: float,
+    effects: Optional[Sequence[str]] = None,
+    lubricant: str = "e-drive ATF",
+    lubrication_factor_f0: float = 1.0,
+    spin_friction: float = 0.06,
+    oil_air_temperature_c: float = 28.0,
+    ambient_temperature_c: float = 26.0,
+    housing_material: Optional[Material] = None,
+    raceway_control: str = "outer",
+    misalignment_rad: Optional[float] = 0.0,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> dict[str, npt.NDArray[np.float64]]: ...
+def seed_a_network_links(
+    bearing: Bearing,
+    speed_rpm: float,
+    lubricant: str = "e-drive ATF",
+    oil_air_temperature_c: float = 28.0,
+    ambient_temperature_c: float = 26.0,
+    housing_material: Optional[Material] = None,
+) -> dict[str, Any]: ...
+def seed_a_steady_temperatures(
+    bearing: Bearing,
+    speed_rpm: float,
+    inner_ring_w: float,
+    balls_w: float,
+    outer_ring_w: float,
+    lubricant: str = "e-drive ATF",
+    oil_air_temperature_c: float = 28.0,
+    ambient_temperature_c: float = 26.0,
+    housing_material: Optional[Material] = None,
+) -> dict[str, Any]: ...

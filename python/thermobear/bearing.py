@@ -390,6 +390,7 @@ def stiffness_curve(
     raceway_control: str = "outer",
     misalignment_rad: Optional[float] = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,
+    **thermal_options: Any,
 ) -> "polars.DataFrame":  # noqa: F821
     """Bearing stiffness against speed, solved in parallel (rayon) with the
     GIL released; deterministic for any thread count.
@@ -397,6 +398,11 @@ def stiffness_curve(
     ``mode="speed"``: the high-speed quasi-static model at each speed.
     ``mode="constant"``: the zero-speed (static) stiffness repeated at every
     speed (seed A Fig. 11, case 1).
+    ``mode="thermal"``: the coupled thermo-mechanical state at each speed
+    (seed A Fig. 11, case 3; see :func:`thermobear.thermal.thermal_stiffness_curve`
+    for the extra columns and ``thermal_options``: ``lubricant``,
+    ``lubrication_factor_f0``, ``spin_friction``, ``oil_air_temperature_c``,
+    ``ambient_temperature_c``, ``housing_material``).
     ``progress(done, total)`` is called between chunks; Ctrl-C interrupts.
     Columns (SI): ``speed_rpm``, ``axial_stiffness_n_per_m``,
     ``radial_stiffness_n_per_m``, ``k_xx_n_per_m`` ... , displacements in mm,
@@ -406,8 +412,32 @@ def stiffness_curve(
 
     from .errors import ConfigError
 
-    if mode not in ("speed", "constant"):
-        raise ConfigError(f'invalid mode = {mode!r}: must be "speed" or "constant"')
+    if mode not in ("speed", "constant", "thermal"):
+        raise ConfigError(f'invalid mode = {mode!r}: must be "speed", "constant" or "thermal"')
+    if mode == "thermal":
+        from .thermal import thermal_stiffness_curve
+
+        if moment_nmm != 0.0:
+            raise ConfigError(
+                f"invalid moment_nmm = {moment_nmm}: "
+                "the thermal mode takes axial and radial loads only"
+            )
+        return thermal_stiffness_curve(
+            bearing,
+            speeds_rpm,
+            axial_n,
+            radial_n,
+            effects=effects,
+            raceway_control=raceway_control,
+            misalignment_rad=misalignment_rad,
+            progress=progress,
+            **thermal_options,
+        )
+    if thermal_options:
+        raise ConfigError(
+            f"invalid argument = {sorted(thermal_options)[0]!r}: "
+            "only the thermal mode takes thermal options"
+        )
     speeds = np.ascontiguousarray(np.asarray(speeds_rpm, dtype=float).ravel())
     if speeds.size == 0:
         raise ConfigError("invalid speeds_rpm = []: give at least one speed")

@@ -24,7 +24,6 @@ __all__ = [
     "compensation_preload",
     "optimal_preload",
     "spindle_grid",
-    "thermal_state",
     "transient",
 ]
 
@@ -115,6 +114,7 @@ class Spindle:
         radial_n: Optional[float] = None,
         preload_kind: Optional[str] = None,
         effects: Optional[Sequence[str]] = None,
+        axial_n: Optional[float] = None,
         **unused: Any,
     ) -> Any:
         """Coupled steady state at one speed as a one-row DataFrame: node
@@ -125,6 +125,11 @@ class Spindle:
 
         from .errors import ConfigError
 
+        if axial_n not in (None, 0.0):
+            raise ConfigError(
+                f"invalid axial_n = {axial_n}: a spindle's axial load is its preload; "
+                "give preload_n"
+            )
         if unused:
             raise ConfigError(
                 f"invalid argument = {sorted(unused)[0]}: a spindle takes speed_rpm, "
@@ -198,17 +203,6 @@ def _check(spindle: Any) -> Spindle:
     if not isinstance(spindle, Spindle):
         raise ConfigError(f"invalid spindle = {type(spindle).__name__}: need a thermobear.Spindle")
     return spindle
-
-
-def thermal_state(obj: Any, **kwargs: Any) -> Any:
-    """Coupled thermal state of a bearing or spindle: dispatches to
-    ``obj._thermal_state(**kwargs)``."""
-    from .errors import ConfigError
-
-    fn = getattr(obj, "_thermal_state", None)
-    if fn is None:
-        raise ConfigError(f"invalid object = {type(obj).__name__}: it has no thermal state")
-    return fn(**kwargs)
 
 
 def transient(

@@ -10,6 +10,7 @@ pub mod parallel;
 pub mod rotor;
 pub mod solve;
 pub mod spindle;
+pub mod thermal;
 
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -19,6 +20,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     gear::register(m)?;
     rotor::register(m)?;
     spindle::register(m)?;
+    thermal::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -47,7 +47,7 @@ fn check_speed(speed_rpm: f64) -> Result<f64> {
     non_negative("speed_rpm", speed_rpm)
 }
 
-fn state_dict<'py>(py: Python<'py>, s: &BearingState) -> PyResult<Bound<'py, PyDict>> {
+pub fn state_dict<'py>(py: Python<'py>, s: &BearingState) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     d.set_item("displacement", s.displacement_m_rad.to_vec().into_pyarray(py))?;
     d.set_item("applied_load", s.applied_load_n_nm.to_vec().into_pyarray(py))?;
@@ -220,6 +220,11 @@ pub fn stiffness_curve<'py>(
         }
     })?;
     let states: Vec<BearingState> = results.into_iter().collect::<Result<_>>().py_err()?;
+    curve_columns(py, &states)
+}
+
+/// Columns of a stiffness curve (one entry per state).
+pub fn curve_columns<'py>(py: Python<'py>, states: &[BearingState]) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     let col = |f: &dyn Fn(&BearingState) -> f64| -> Vec<f64> { states.iter().map(f).collect() };
     d.set_item(

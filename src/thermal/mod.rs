@@ -7,7 +7,9 @@
 //! is meant to be a thin loop over these pieces: per-contact data in
 //! [`heat::bearing_heat`], [`network::SteadySolver::solve`] with a warm
 //! start, [`expansion::thermal_offsets`] back to the groove-centre geometry.
+//! [`coupled`] is that loop for one bearing in the seed A network.
 
+pub mod coupled;
 pub mod expansion;
 pub mod heat;
 pub mod lubricant;

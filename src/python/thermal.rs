@@ -1,0 +1,362 @@
+//! Bindings for the coupled thermo-mechanical bearing model (seed A):
+//! one operating point and a thermal stiffness curve (GIL released,
+//! Ctrl-C between chunks).
+
+use numpy::{IntoPyArray, PyReadonlyArray1};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use super::bearing::{PyBearing, PyMaterial};
+use super::errors::IntoPy;
+use super::parallel::{chunked_map, default_chunk};
+use super::solve::{curve_columns, solve_options, state_dict, tilt_option};
+use crate::bearing::{Bearing, BearingState};
+use crate::error::{finite, Result};
+use crate::thermal::coupled::{seed_a_mounting, CoupledBearing, CoupledOptions, ThermalState};
+use crate::thermal::presets::SeedAParams;
+use crate::thermal::Lubricant;
+
+/// Model settings shared by both entry points.
+struct Settings {
+    effects: Option<Vec<String>>,
+    lubricant: String,
+    lubrication_factor_f0: f64,
+    spin_friction: f64,
+    oil_air_temperature_c: f64,
+    ambient_temperature_c: f64,
+    housing_material: Option<PyMaterial>,
+    raceway_control: String,
+    misalignment_rad: Option<f64>,
+}
+
+impl Settings {
+    fn build(self, bearing: &Bearing) -> Result<CoupledBearing> {
+        let mut solve = solve_options(self.effects, &self.raceway_control)?;
+        solve.tilt = tilt_option(self.misalignment_rad, 0.0)?;
+        let p = seed_a_params(
+            bearing,
+            &self.lubricant,
+            self.oil_air_temperature_c,
+            self.ambient_temperature_c,
+            self.housing_material,
+        )?;
+        let mounting = seed_a_mounting(&p);
+        let options = CoupledOptions {
+            solve,
+            lubrication_factor_f0: self.lubrication_factor_f0,
+            spin_friction: self.spin_friction,
+            ..CoupledOptions::default()
+        };
+        CoupledBearing::new(bearing, p, mounting, options)
+    }
+}
+
+fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("node", s.node_names.clone())?;
+    d.set_item("temperature_c", s.temperatures_c.clone().into_pyarray(py))?;
+    let h = &s.heat;
+    d.set_item("source", vec!["load", "viscous", "inner_spin", "outer_spin"])?;
+    d.set_item(
+        "heat_w",
+        vec![h.load_w, h.viscous_w, h.heat.inner_spin_w, h.heat.outer_spin_w].into_pyarray(py),
+    )?;
+    d.set_item("part", vec!["inner_ring", "balls", "outer_ring"])?;
+    d.set_item(
+        "part_heat_w",
+        vec![h.split.inner_ring_w, h.split.balls_w, h.split.outer_ring_w].into_pyarray(py),
+    )?;
+    d.set_item(
+        "boundary",
+        s.boundary_flows_w.iter().map(|b| b.0.clone()).collect::<Vec<_>>(),
+    )?;
+    d.set_item(
+        "boundary_flow_w",
+        s.boundary_flows_w
+            .iter()
+            .map(|b| b.1)
+            .collect::<Vec<_>>()
+            .into_pyarray(py),
+    )?;
+    let u = &s.offsets;
+    let def = PyDict::new(py);
+    let um = 1e6;
+    def.set_item("radial_thermal_offset_um", s.raceway_offsets.radial_m * um)?;
+    def.set_item("axial_thermal_offset_um", s.raceway_offsets.axial_m * um)?;
+    def.set_item("groove_centre_radial_um", u.radial_m * um)?;
+    def.set_item("groove_centre_axial_um", u.axial_m * um)?;
+    def.set_item("ball_growth_um", u.ball_diameter_growth_m * um)?;
+    def.set_item("free_gap_change_um", u.free_gap_change_m * um)?;
+    def.set_item("inner_groove_centre_um", u.inner_groove_centre_radial_m * um)?;
+    def.set_item("outer_groove_centre_um", u.outer_groove_centre_radial_m * um)?;
+    def.set_item("shaft_surface_um", u.shaft_surface_radial_m * um)?;
+    def.set_item("housing_bore_um", u.housing_bore_radial_m * um)?;
+    let omega = crate::units::rpm_to_rad_s(s.speed_rpm);
+    def.set_item("centrifugal_expansion_um", c.model().ring_expansion_m(omega) * um)?;
+    def.set_item(
+        "radial_displacement_um",
+        s.bearing.displacement_m_rad[0].hypot(s.bearing.displacement_m_rad[1]) * um,
+    )?;
+    def.set_item("axial_displacement_um", s.bearing.displacement_m_rad[2] * um)?;
+    d.set_item("deformations", def)?;
+    d.set_item("solution", state_dict(py, &s.bearing)?)?;
+    d.set_item("iterations", s.iterations)?;
+    d.set_item("residual_k", s.residual_k)?;
+    d.set_item("offset_change_m", s.offset_change_m)?;
+    d.set_item("oil_temperature_c", h.oil_temperature_c)?;
+    d.set_item("viscosity_cst", h.viscosity_cst)?;
+    d.set_item("load_moment_nmm", h.load_moment_n_m * 1e3)?;
+    d.set_item("viscous_moment_nmm", h.viscous_moment_n_m * 1e3)?;
+    d.set_item("total_heat_w", h.heat.total_w())?;
+    Ok(d)
+}
+
+/// Coupled thermal steady state of one bearing in the seed A network.
+#[pyfunction]
+#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0)))]
+#[allow(clippy::too_many_arguments)]
+pub fn thermal_state<'py>(
+    py: Python<'py>,
+    bearing: &PyBearing,
+    speed_rpm: f64,
+    axial_n: f64,
+    radial_n: f64,
+    effects: Option<Vec<String>>,
+    lubricant: String,
+    lubrication_factor_f0: f64,
+    spin_friction: f64,
+    oil_air_temperature_c: f64,
+    ambient_temperature_c: f64,
+    housing_material: Option<PyMaterial>,
+    raceway_control: String,
+    misalignment_rad: Option<f64>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let settings = Settings {
+        effects,
+        lubricant,
+        lubrication_factor_f0,
+        spin_friction,
+        oil_air_temperature_c,
+        ambient_temperature_c,
+        housing_material,
+        raceway_control,
+        misalignment_rad,
+    };
+    let b = &bearing.inner;
+    let (c, s) = py
+        .detach(|| -> Result<(CoupledBearing, ThermalState)> {
+            let c = settings.build(b)?;
+            let s = c.solve(speed_rpm, axial_n, radial_n)?;
+            Ok((c, s))
+        })
+        .py_err()?;
+    thermal_dict(py, &c, &s)
+}
+
+/// Thermal stiffness curve: the coupled state at every speed, in parallel.
+#[pyfunction]
+#[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), progress=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn thermal_stiffness_curve<'py>(
+    py: Python<'py>,
+    bearing: &PyBearing,
+    speeds_rpm: PyReadonlyArray1<'py, f64>,
+    axial_n: f64,
+    radial_n: f64,
+    effects: Option<Vec<String>>,
+    lubricant: String,
+    lubrication_factor_f0: f64,
+    spin_friction: f64,
+    oil_air_temperature_c: f64,
+    ambient_temperature_c: f64,
+    housing_material: Option<PyMaterial>,
+    raceway_control: String,
+    misalignment_rad: Option<f64>,
+    progress: Option<Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let speeds = speeds_rpm.as_slice()?.to_vec();
+    let settings = Settings {
+        effects,
+        lubricant,
+        lubrication_factor_f0,
+        spin_friction,
+        oil_air_temperature_c,
+        ambient_temperature_c,
+        housing_material,
+        raceway_control,
+        misalignment_rad,
+    };
+    let c = settings.build(&bearing.inner).py_err()?;
+    let results = chunked_map(py, &speeds, default_chunk(speeds.len()), progress.as_ref(), |&n| {
+        c.solve(n, axial_n, radial_n)
+    })?;
+    let states: Vec<ThermalState> = results.into_iter().collect::<Result<_>>().py_err()?;
+    let bearings: Vec<BearingState> = states.iter().map(|s| s.bearing.clone()).collect();
+    let d = curve_columns(py, &bearings)?;
+    let col = |f: &dyn Fn(&ThermalState) -> f64| -> Vec<f64> { states.iter().map(f).collect() };
+    for (key, name) in [
+        ("shaft_temperature_c", "Ts"),
+        ("inner_ring_temperature_c", "Ti"),
+        ("ball_temperature_c", "Tb"),
+        ("outer_ring_temperature_c", "To"),
+        ("housing_temperature_c", "Th"),
+    ] {
+        let t: Vec<f64> = states
+            .iter()
+            .map(|s| s.temperature_c(name))
+            .collect::<Result<_>>()
+            .py_err()?;
+        d.set_item(key, t.into_pyarray(py))?;
+    }
+    d.set_item("heat_w", col(&|s| s.heat.heat.total_w()).into_pyarray(py))?;
+    d.set_item("load_heat_w", col(&|s| s.heat.load_w).into_pyarray(py))?;
+    d.set_item("viscous_heat_w", col(&|s| s.heat.viscous_w).into_pyarray(py))?;
+    d.set_item(
+        "spin_heat_w",
+        col(&|s| s.heat.heat.inner_spin_w + s.heat.heat.outer_spin_w).into_pyarray(py),
+    )?;
+    d.set_item(
+        "radial_thermal_offset_um",
+        col(&|s| s.raceway_offsets.radial_m * 1e6).into_pyarray(py),
+    )?;
+    d.set_item(
+        "axial_thermal_offset_um",
+        col(&|s| s.raceway_offsets.axial_m * 1e6).into_pyarray(py),
+    )?;
+    d.set_item(
+        "ball_growth_um",
+        col(&|s| s.offsets.ball_diameter_growth_m * 1e6).into_pyarray(py),
+    )?;
+    d.set_item(
+        "centrifugal_expansion_um",
+        col(&|s| c.model().ring_expansion_m(crate::units::rpm_to_rad_s(s.speed_rpm)) * 1e6).into_pyarray(py),
+    )?;
+    d.set_item("thermal_iterations", col(&|s| s.iterations as f64).into_pyarray(py))?;
+    Ok(d)
+}
+
+fn seed_a_params(
+    bearing: &Bearing,
+    lubricant: &str,
+    oil_air_temperature_c: f64,
+    ambient_temperature_c: f64,
+    housing_material: Option<PyMaterial>,
+) -> Result<SeedAParams> {
+    let mut p = SeedAParams::for_bearing(bearing);
+    p.lubricant = Lubricant::preset(lubricant)?;
+    p.oil_air_temperature_c = finite("oil_air_temperature_c", oil_air_temperature_c)?;
+    p.ambient_temperature_c = finite("ambient_temperature_c", ambient_temperature_c)?;
+    if let Some(m) = housing_material {
+        p.housing = m.inner;
+    }
+    Ok(p)
+}
+
+/// The seed A network at `speed_rpm` as plain numbers (for independent
+/// solvers): node names, fixed temperatures (boundaries) and per link
+/// `(name, a, b, conductance_w_per_k, natural_w_per_k125)`, the flow a -> b
+/// being `G dT + N |dT|^0.25 dT`.
+#[pyfunction]
+#[pyo3(signature = (bearing, speed_rpm, lubricant="e-drive ATF".to_string(), oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None))]
+pub fn seed_a_network_links<'py>(
+    py: Python<'py>,
+    bearing: &PyBearing,
+    speed_rpm: f64,
+    lubricant: String,
+    oil_air_temperature_c: f64,
+    ambient_temperature_c: f64,
+    housing_material: Option<PyMaterial>,
+) -> PyResult<Bound<'py, PyDict>> {
+    use crate::thermal::network::{Convection, LinkKind, NodeKind};
+    let b = &bearing.inner;
+    let p = seed_a_params(
+        b,
+        &lubricant,
+        oil_air_temperature_c,
+        ambient_temperature_c,
+        housing_material,
+    )
+    .py_err()?;
+    let net = crate::thermal::presets::seed_a_network(b, &p).py_err()?;
+    let w = crate::units::rpm_to_rad_s(crate::error::non_negative("speed_rpm", speed_rpm).py_err()?);
+    let d = PyDict::new(py);
+    let nodes = net.network.nodes();
+    d.set_item("node", nodes.iter().map(|n| n.name.clone()).collect::<Vec<_>>())?;
+    let fixed = PyDict::new(py);
+    for n in nodes {
+        if let NodeKind::Boundary { temperature_c } = n.kind {
+            fixed.set_item(n.name.clone(), temperature_c)?;
+        }
+    }
+    d.set_item("boundary_temperature_c", fixed)?;
+    let links: Vec<(String, usize, usize, f64, f64)> = net
+        .network
+        .links()
+        .iter()
+        .map(|l| match &l.kind {
+            LinkKind::Conduction { conductance_w_per_k } => (l.name.clone(), l.a, l.b, *conductance_w_per_k, 0.0),
+            LinkKind::Convection { area_m2, law } => match law {
+                Convection::Natural { coefficient_w_m2_k125 } => {
+                    (l.name.clone(), l.a, l.b, 0.0, coefficient_w_m2_k125 * area_m2)
+                }
+                other => (l.name.clone(), l.a, l.b, other.h_w_m2k(0.0, w) * area_m2, 0.0),
+            },
+        })
+        .collect();
+    d.set_item("links", links)?;
+    Ok(d)
+}
+
+/// Steady temperatures of the seed A network (Newton) for the heat on the
+/// inner raceway, balls and outer raceway nodes [W] at `speed_rpm`.
+#[pyfunction]
+#[pyo3(signature = (bearing, speed_rpm, inner_ring_w, balls_w, outer_ring_w, lubricant="e-drive ATF".to_string(), oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn seed_a_steady_temperatures<'py>(
+    py: Python<'py>,
+    bearing: &PyBearing,
+    speed_rpm: f64,
+    inner_ring_w: f64,
+    balls_w: f64,
+    outer_ring_w: f64,
+    lubricant: String,
+    oil_air_temperature_c: f64,
+    ambient_temperature_c: f64,
+    housing_material: Option<PyMaterial>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let b = &bearing.inner;
+    let p = seed_a_params(
+        b,
+        &lubricant,
+        oil_air_temperature_c,
+        ambient_temperature_c,
+        housing_material,
+    )
+    .py_err()?;
+    let t = py
+        .detach(|| -> Result<Vec<f64>> {
+            let net = crate::thermal::presets::seed_a_network(b, &p)?;
+            let split = crate::thermal::HeatSplit {
+                inner_ring_w: finite("inner_ring_w", inner_ring_w)?,
+                balls_w: finite("balls_w", balls_w)?,
+                outer_ring_w: finite("outer_ring_w", outer_ring_w)?,
+            };
+            let w = crate::units::rpm_to_rad_s(crate::error::non_negative("speed_rpm", speed_rpm)?);
+            let mut solver = crate::thermal::SteadySolver::new(net.network.clone());
+            Ok(solver.solve(&net.sources_w(&split), w)?.temperatures_c)
+        })
+        .py_err()?;
+    let d = PyDict::new(py);
+    let p2 = crate::thermal::presets::seed_a_network(b, &p).py_err()?;
+    d.set_item("node", p2.network.names().iter().cloned().collect::<Vec<_>>())?;
+    d.set_item("temperature_c", t.into_pyarray(py))?;
+    Ok(d)
+}
+
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(seed_a_network_links, m)?)?;
+    m.add_function(wrap_pyfunction!(seed_a_steady_temperatures, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal_state, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal_stiffness_curve, m)?)?;
+    Ok(())
+}

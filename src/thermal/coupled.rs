@@ -1,0 +1,771 @@
+//! The coupled thermo-mechanical fixed point of one bearing in its thermal
+//! network (seed A Fig. 7; PHYSICS.md section 1, the coupling chain).
+//!
+//! One iteration maps node temperatures T to new node temperatures:
+//!
+//! 1. component rises over the assembly temperature (shaft Ts, inner ring
+//!    the mean of Ti and Tci, balls Tb, outer ring the mean of To and Tco,
+//!    housing Th) -> [`thermal_offsets`] (A-33..A-37, each part switched by
+//!    its `thermal_expansion_*` effect);
+//! 2. offsets -> [`RacewayOffsets`] (A-38): `radial_m = u_Tr - dA cos(alpha0)`,
+//!    `axial_m = u_Ta - dA sin(alpha0)` with dA = dr_i + dr_o - dD the change
+//!    of the free groove-centre gap. This is how the ball growth dD enters:
+//!    a ball growing by dD shortens the loaded distance between the groove
+//!    centres available to the two contacts by dD along the contact line.
+//!    The projection on the free contact line instead of the operating one
+//!    is second order: dD (1 - cos(alpha - alpha0)), below 0.1 nm here;
+//!    the Hertz constants of the grown ball (dD/D ~ 1e-4) are not rebuilt;
+//! 3. quasi-static solve (Jones-Harris): the first from the static start,
+//!    later ones warm-started from the previous iteration (an unchanged
+//!    offset reuses the previous state, so with every expansion switched
+//!    off the result is bit-identical to the isothermal solve); every speed
+//!    is independent of the others;
+//! 4. heat (A-20..A-23): omega M1 (Palmgren, applied loads, load-weighted
+//!    mean inner contact angle) + omega Mv (viscosity at the ball node when
+//!    `temperature_dependent_viscosity` is on, else at the oil-air supply
+//!    temperature, seed A assumption 3) + per-contact spin heat
+//!    |omega_s| (3/8) mu_s Q a E (`spin_friction`), E by Hamrock-Brewe at
+//!    the operating contact angle;
+//! 5. Burton-Staph split (A-27) -> steady network (Newton, warm start).
+//!
+//! Fixed point: Anderson(1) acceleration of the damped Picard iteration
+//! `T <- T + lambda (G(T) - T)` ([`anderson_step`]), lambda = 1 to start,
+//! halved whenever the temperature change grows; a step whose extrapolation
+//! alone would cross the lubricant's temperature limit falls back to G(T). Converged when the
+//! largest node change is below `tolerance_k` and the raceway offsets moved
+//! less than `tolerance_m`.
+//!
+//! Thermal runaway is reported as [`Error::ThermalRunaway`] when (a) a node
+//! exceeds the lubricant's highest temperature with data (a physical
+//! bound: the lubricant fails there), or (b) heat, the hottest node and the
+//! largest contact load all grow while the change between iterates does not
+//! shrink, for [`RUNAWAY_STREAK`] iterations in a row (the preload-heat
+//! loop diverging). `max_iterations` ends every run with
+//! [`Error::convergence`] otherwise.
+
+use rayon::prelude::*;
+
+use super::expansion::{thermal_offsets, ComponentRises, Mounting, RingFit, ThermalOffsets};
+use super::heat::{bearing_heat, load_moment_n_m, viscous_moment_n_m, BearingHeat, HeatSplit, SpinContact};
+use super::lubricant::Lubricant;
+use super::network::SteadySolver;
+use super::presets::{seed_a_network, BearingNetwork, SeedAParams};
+use crate::bearing::contact::{curvature, hamrock_brewe};
+use crate::bearing::quasi_static::{static_start_q, WarmStart};
+use crate::bearing::{Bearing, BearingModel, BearingState, Raceway, RacewayOffsets, SolveOptions};
+use crate::effects::{Effect, EffectSet};
+use crate::error::{in_range, non_negative, positive, Error, Result};
+use crate::units::rpm_to_rad_s;
+
+/// Growth streak that declares a runaway (see module docs).
+pub const RUNAWAY_STREAK: usize = 4;
+
+/// Settings of the coupled model.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CoupledOptions {
+    /// Bearing solver options; `effects` holds every effect (mechanical,
+    /// thermal expansion, viscosity, spin friction); `offsets` is ignored
+    /// (the coupled model sets it).
+    pub solve: SolveOptions,
+    /// Palmgren lubrication factor f0 (A-21). Default 1.0: Harris' value
+    /// for a deep-groove bearing under oil mist (oil-air in seed A).
+    pub lubrication_factor_f0: f64,
+    /// Spin sliding friction coefficient mu_s (A-22). Seed A gives no value;
+    /// default 0.06, a typical traction coefficient of a steel EHL contact
+    /// (Harris & Kotzalas, traction curves 0.03..0.1). Assumption.
+    pub spin_friction: f64,
+    /// Assembly (reference) temperature of the clearance and fits [C];
+    /// `None`: the ambient temperature of the network.
+    pub reference_temperature_c: Option<f64>,
+    /// Largest node temperature change at convergence [K].
+    pub tolerance_k: f64,
+    /// Largest change of the raceway offsets at convergence [m].
+    pub tolerance_m: f64,
+    pub max_iterations: usize,
+}
+
+impl Default for CoupledOptions {
+    fn default() -> Self {
+        CoupledOptions {
+            solve: SolveOptions::default(),
+            lubrication_factor_f0: 1.0,
+            spin_friction: 0.06,
+            reference_temperature_c: None,
+            tolerance_k: 1e-6,
+            tolerance_m: 1e-12,
+            max_iterations: 200,
+        }
+    }
+}
+
+impl CoupledOptions {
+    fn validate(&self) -> Result<()> {
+        positive("lubrication_factor_f0", self.lubrication_factor_f0)?;
+        non_negative("spin_friction", self.spin_friction)?;
+        if let Some(t) = self.reference_temperature_c {
+            in_range("reference_temperature_c", t, -60.0, 200.0)?;
+        }
+        positive("tolerance_k", self.tolerance_k)?;
+        positive("tolerance_m", self.tolerance_m)?;
+        if self.max_iterations == 0 {
+            return Err(Error::config("max_iterations", 0, "must be at least 1"));
+        }
+        Ok(())
+    }
+}
+
+/// Mounting of the seed A bearing matching its network: housing of the
+/// network's material and diameter, shaft and housing lengths of the
+/// network, both rings on tight fits (A-35 assumes both), free (plane
+/// stress) growth, shaft growth loading the bearing (`axial_sign = +1`).
+pub fn seed_a_mounting(params: &SeedAParams) -> Mounting {
+    Mounting {
+        housing: params.housing.clone(),
+        housing_outer_diameter_m: params.housing_diameter_m,
+        shaft_length_m: params.shaft_length_m,
+        housing_length_m: params.housing_length_m,
+        inner_fit: RingFit::Tight,
+        outer_fit: RingFit::Tight,
+        plane_strain: false,
+        axial_sign: 1.0,
+    }
+}
+
+/// Heat of one operating point, by mechanism.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HeatReport {
+    /// Palmgren load moment M1 [N m] and viscous moment Mv [N m].
+    pub load_moment_n_m: f64,
+    pub viscous_moment_n_m: f64,
+    /// omega M1 and omega Mv [W].
+    pub load_w: f64,
+    pub viscous_w: f64,
+    /// Oil temperature and kinematic viscosity used in Mv [C], [cSt].
+    pub oil_temperature_c: f64,
+    pub viscosity_cst: f64,
+    /// All mechanisms (rolling = load + viscous, inner and outer spin) [W].
+    pub heat: BearingHeat,
+    /// Burton-Staph split (A-27) [W].
+    pub split: HeatSplit,
+}
+
+/// Load-weighted mean inner contact angle of the loaded balls; the free
+/// angle when no ball carries load [rad].
+pub fn mean_inner_contact_angle_rad(bearing: &Bearing, state: &BearingState) -> f64 {
+    let (qa, q) = state.balls.iter().fold((0.0, 0.0), |(qa, q), b| {
+        (qa + b.inner_load_n * b.inner_contact_angle_rad, q + b.inner_load_n)
+    });
+    if q > 0.0 {
+        qa / q
+    } else {
+        bearing.geometry.free_contact_angle_rad
+    }
+}
+
+/// Complete elliptic integral E of a contact at `alpha` (Hamrock-Brewe).
+fn elliptic_e(bearing: &Bearing, raceway: Raceway, alpha: f64) -> f64 {
+    let g = &bearing.geometry;
+    let f = match raceway {
+        Raceway::Inner => g.inner_conformity,
+        Raceway::Outer => g.outer_conformity,
+    };
+    let c = curvature(raceway, g.ball_diameter_m, g.pitch_diameter_m, f, alpha);
+    hamrock_brewe(c.ry / c.rx).1
+}
+
+/// Spin contacts of every ball from a solved state.
+pub fn spin_contacts(bearing: &Bearing, state: &BearingState) -> (Vec<SpinContact>, Vec<SpinContact>) {
+    let inner = state
+        .balls
+        .iter()
+        .map(|b| SpinContact {
+            load_n: b.inner_load_n.max(0.0),
+            semi_major_m: b.inner_semi_major_m.max(0.0),
+            elliptic_e: elliptic_e(bearing, Raceway::Inner, b.inner_contact_angle_rad),
+            spin_speed_rad_s: b.inner_spin_rad_s,
+        })
+        .collect();
+    let outer = state
+        .balls
+        .iter()
+        .map(|b| SpinContact {
+            load_n: b.outer_load_n.max(0.0),
+            semi_major_m: b.outer_semi_major_m.max(0.0),
+            elliptic_e: elliptic_e(bearing, Raceway::Outer, b.outer_contact_angle_rad),
+            spin_speed_rad_s: b.outer_spin_rad_s,
+        })
+        .collect();
+    (inner, outer)
+}
+
+/// Heat of a solved bearing (A-20..A-23, A-27) with oil at `oil_c`.
+#[allow(clippy::too_many_arguments)]
+pub fn operating_heat(
+    bearing: &Bearing,
+    state: &BearingState,
+    axial_n: f64,
+    radial_n: f64,
+    lubricant: &Lubricant,
+    oil_c: f64,
+    options: &CoupledOptions,
+) -> Result<HeatReport> {
+    let g = &bearing.geometry;
+    let omega = rpm_to_rad_s(state.speed_rpm);
+    let m1 = load_moment_n_m(
+        g,
+        axial_n.abs(),
+        radial_n.abs(),
+        mean_inner_contact_angle_rad(bearing, state),
+    )?;
+    let nu = lubricant.kinematic_viscosity_cst(oil_c)?;
+    let mv = viscous_moment_n_m(options.lubrication_factor_f0, nu, state.speed_rpm, g.pitch_diameter_m)?;
+    let (ci, co) = if options.solve.effects.has(Effect::SpinFriction) {
+        spin_contacts(bearing, state)
+    } else {
+        (Vec::new(), Vec::new())
+    };
+    let heat = bearing_heat(omega, m1, mv, options.spin_friction, &ci, &co)?;
+    Ok(HeatReport {
+        load_moment_n_m: m1,
+        viscous_moment_n_m: mv,
+        load_w: omega * m1,
+        viscous_w: omega * mv,
+        oil_temperature_c: oil_c,
+        viscosity_cst: nu,
+        heat,
+        split: heat.split(),
+    })
+}
+
+/// Result of the coupled fixed point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThermalState {
+    pub speed_rpm: f64,
+    /// Node names and steady temperatures [C] (boundaries included).
+    pub node_names: Vec<String>,
+    pub temperatures_c: Vec<f64>,
+    /// Heat flowing out through each boundary node [W].
+    pub boundary_flows_w: Vec<(String, f64)>,
+    pub heat: HeatReport,
+    /// Component rises over the reference temperature [K].
+    pub rises: ComponentRises,
+    /// Thermal displacements of every part (switched effects give zero).
+    pub offsets: ThermalOffsets,
+    /// What the bearing solver received (A-38, ball growth projected).
+    pub raceway_offsets: RacewayOffsets,
+    /// The bearing at the converged temperatures.
+    pub bearing: BearingState,
+    /// Fixed-point iterations used.
+    pub iterations: usize,
+    /// Last largest node temperature change [K].
+    pub residual_k: f64,
+    /// Last change of the raceway offsets [m].
+    pub offset_change_m: f64,
+}
+
+impl ThermalState {
+    /// Temperature of a named node [C].
+    pub fn temperature_c(&self, node: &str) -> Result<f64> {
+        self.node_names
+            .iter()
+            .position(|n| n == node)
+            .map(|i| self.temperatures_c[i])
+            .ok_or_else(|| {
+                Error::config(
+                    "node",
+                    node,
+                    format!("no such node; known: {}", self.node_names.join(", ")),
+                )
+            })
+    }
+}
+
+/// One bearing in the seed A network, ready to solve many operating points.
+#[derive(Debug, Clone)]
+pub struct CoupledBearing {
+    model: BearingModel,
+    network: BearingNetwork,
+    mounting: Mounting,
+    params: SeedAParams,
+    options: CoupledOptions,
+}
+
+/// Data of one iteration used by the runaway rule.
+#[derive(Debug, Clone, Copy)]
+struct Trend {
+    heat_w: f64,
+    hottest_c: f64,
+    max_load_n: f64,
+    change_k: f64,
+}
+
+impl Trend {
+    fn all_grow(&self, prev: &Trend) -> bool {
+        self.heat_w > prev.heat_w
+            && self.hottest_c > prev.hottest_c
+            && self.max_load_n > prev.max_load_n
+            && self.change_k >= prev.change_k
+    }
+}
+
+impl CoupledBearing {
+    /// Build the model, the seed A network and the mounting.
+    pub fn new(bearing: &Bearing, params: SeedAParams, mounting: Mounting, options: CoupledOptions) -> Result<Self> {
+        options.validate()?;
+        mounting.validate(bearing)?;
+        params.lubricant.check_temperature(params.oil_air_temperature_c)?;
+        let network = seed_a_network(bearing, &params)?;
+        Ok(CoupledBearing {
+            model: BearingModel::new(bearing)?,
+            network,
+            mounting,
+            params,
+            options,
+        })
+    }
+
+    /// Seed A defaults ([`SeedAParams::for_bearing`], [`seed_a_mounting`]).
+    pub fn seed_a(bearing: &Bearing, options: CoupledOptions) -> Result<Self> {
+        let params = SeedAParams::for_bearing(bearing);
+        let mounting = seed_a_mounting(&params);
+        Self::new(bearing, params, mounting, options)
+    }
+
+    pub fn model(&self) -> &BearingModel {
+        &self.model
+    }
+    pub fn options(&self) -> &CoupledOptions {
+        &self.options
+    }
+    pub fn params(&self) -> &SeedAParams {
+        &self.params
+    }
+
+    fn reference_c(&self) -> f64 {
+        self.options
+            .reference_temperature_c
+            .unwrap_or(self.params.ambient_temperature_c)
+    }
+
+    /// Component rises from node temperatures.
+    pub fn rises(&self, t: &[f64]) -> ComponentRises {
+        let n = &self.network;
+        let r = self.reference_c();
+        ComponentRises {
+            shaft_k: t[n.shaft] - r,
+            inner_ring_k: 0.5 * (t[n.inner] + t[n.inner_contact]) - r,
+            balls_k: t[n.balls] - r,
+            outer_ring_k: 0.5 * (t[n.outer] + t[n.outer_contact]) - r,
+            housing_k: t[n.housing] - r,
+        }
+    }
+
+    /// Raceway offsets for the solver (module docs, step 2).
+    pub fn raceway_offsets(&self, u: &ThermalOffsets) -> RacewayOffsets {
+        let a0 = self.model.bearing().geometry.free_contact_angle_rad;
+        RacewayOffsets {
+            axial_m: u.axial_with_gap_m(a0),
+            radial_m: u.radial_with_gap_m(a0),
+        }
+    }
+
+    fn check_bound(&self, t: &[f64], speed_rpm: f64) -> Result<()> {
+        let lub = &self.params.lubricant;
+        for (i, node) in self.network.network.nodes().iter().enumerate() {
+            if t[i].is_nan() || t[i] > lub.max_temperature_c {
+                return Err(Error::ThermalRunaway(format!(
+                    "at {speed_rpm} rpm node {} reached {:.1} C, above the highest temperature of lubricant '{}' ({} C); \
+                     lower the speed or the load, or use a lubricant rated hotter",
+                    node.name, t[i], lub.name, lub.max_temperature_c
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// The coupled steady state at `speed_rpm` under an axial and a radial
+    /// load (N; the applied load of the bearing, preload included).
+    pub fn solve(&self, speed_rpm: f64, axial_n: f64, radial_n: f64) -> Result<ThermalState> {
+        positive("speed_rpm", speed_rpm)?;
+        let load = [radial_n, 0.0, axial_n, 0.0, 0.0];
+        let effects: EffectSet = self.options.solve.effects;
+        let mut opts = self.options.solve;
+        opts.offsets = RacewayOffsets::default();
+        let start = static_start_q(&self.model, &load, &opts)?;
+        let bearing = self.model.bearing();
+        let lub = &self.params.lubricant;
+        let omega = rpm_to_rad_s(speed_rpm);
+        let mut solver = SteadySolver::new(self.network.network.clone());
+        let oil_node = self.network.balls;
+        let mut t = self.network.network.initial_temperatures(self.reference_c());
+        let mut lambda: f64 = 1.0;
+        let mut prev: Option<Trend> = None;
+        let mut streak = 0;
+        let mut last_off = RacewayOffsets::default();
+        let mut last_state: Option<BearingState> = None;
+        let mut warm = WarmStart::new();
+        let mut history: Option<(Vec<f64>, Vec<f64>)> = None;
+        let (mut change_k, mut change_m) = (f64::INFINITY, f64::INFINITY);
+        for it in 1..=self.options.max_iterations {
+            self.check_bound(&t, speed_rpm)?;
+            let rises = self.rises(&t);
+            let u = thermal_offsets(bearing, &self.mounting, &rises, effects)?;
+            let off = self.raceway_offsets(&u);
+            // Same offsets as the last solve (always so with every expansion
+            // switched off): the bearing state is unchanged. Otherwise warm
+            // start from the last solution (the offsets move by microns).
+            let state = match &last_state {
+                Some(s) if it > 1 && off == last_off => s.clone(),
+                _ => {
+                    opts.offsets = off;
+                    let q0 = last_state.as_ref().map_or(start, |s| s.displacement_m_rad);
+                    match self.model.solve_from(&load, speed_rpm, &opts, q0, &mut warm) {
+                        Ok(s) => s,
+                        // A warm start can fail where balls lose contact:
+                        // retry from the static start.
+                        Err(_) if last_state.is_some() => {
+                            warm = WarmStart::new();
+                            self.model.solve_from(&load, speed_rpm, &opts, start, &mut warm)?
+                        }
+                        Err(e) => return Err(e),
+                    }
+                }
+            };
+            let oil_c = if effects.has(Effect::TemperatureDependentViscosity) {
+                t[oil_node]
+            } else {
+                self.params.oil_air_temperature_c
+            };
+            let heat = operating_heat(bearing, &state, axial_n, radial_n, lub, oil_c, &self.options)?;
+            let g = solver
+                .solve(&self.network.sources_w(&heat.split), omega)?
+                .temperatures_c;
+            change_k = g.iter().zip(&t).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+            change_m = if it == 1 {
+                f64::INFINITY
+            } else {
+                (off.radial_m - last_off.radial_m)
+                    .abs()
+                    .max((off.axial_m - last_off.axial_m).abs())
+            };
+            last_off = off;
+            if change_k <= self.options.tolerance_k && change_m <= self.options.tolerance_m {
+                self.check_bound(&g, speed_rpm)?;
+                let flows = self.network.network.boundary_flows_w(&g, omega);
+                return Ok(ThermalState {
+                    speed_rpm,
+                    node_names: self.network.network.names().iter().cloned().collect(),
+                    temperatures_c: g,
+                    boundary_flows_w: flows,
+                    heat,
+                    rises,
+                    offsets: u,
+                    raceway_offsets: off,
+                    bearing: state,
+                    iterations: it,
+                    residual_k: change_k,
+                    offset_change_m: change_m,
+                });
+            }
+            let trend = Trend {
+                heat_w: heat.heat.total_w(),
+                hottest_c: g.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+                max_load_n: state.max_inner_load_n(),
+                change_k,
+            };
+            if let Some(p) = prev {
+                if trend.all_grow(&p) {
+                    streak += 1;
+                    if streak >= RUNAWAY_STREAK {
+                        return Err(Error::ThermalRunaway(format!(
+                            "at {speed_rpm} rpm heat ({:.1} W), the hottest node ({:.1} C) and the largest \
+                             contact load ({:.0} N) grew together for {streak} fixed-point iterations \
+                             without settling (last temperature change {:.3e} K)",
+                            trend.heat_w, trend.hottest_c, trend.max_load_n, change_k
+                        )));
+                    }
+                } else {
+                    streak = 0;
+                }
+                if change_k > p.change_k {
+                    lambda = (0.5 * lambda).max(1.0 / 64.0);
+                }
+            }
+            prev = Some(trend);
+            last_state = Some(state);
+            let next = anderson_step(&t, &g, history.as_ref(), lambda);
+            let f: Vec<f64> = g.iter().zip(&t).map(|(a, b)| a - b).collect();
+            history = Some((t, f));
+            // Never let the extrapolation alone cross the lubricant bound.
+            t = if next.iter().any(|x| *x > lub.max_temperature_c) {
+                g
+            } else {
+                next
+            };
+        }
+        Err(Error::convergence(
+            "coupled thermo-mechanical fixed point",
+            self.options.max_iterations,
+            change_k.max(change_m / 1e-6),
+            self.options.tolerance_k,
+        ))
+    }
+}
+
+/// One Anderson(1) mixing step (Walker & Ni, SIAM J. Numer. Anal. 49 (2011),
+/// m = 1): with f = G(x) - x and the previous pair (x', f'),
+/// `x+ = x + beta f - theta ((x - x') + beta (f - f'))`,
+/// `theta = f.(f - f') / |f - f'|^2`; a plain damped step `x + beta f`
+/// without history or when f = f'.
+pub fn anderson_step(x: &[f64], g: &[f64], previous: Option<&(Vec<f64>, Vec<f64>)>, beta: f64) -> Vec<f64> {
+    let f: Vec<f64> = g.iter().zip(x).map(|(a, b)| a - b).collect();
+    let plain = || x.iter().zip(&f).map(|(xi, fi)| xi + beta * fi).collect();
+    let Some((xp, fp)) = previous else {
+        return plain();
+    };
+    let df: Vec<f64> = f.iter().zip(fp).map(|(a, b)| a - b).collect();
+    let dd: f64 = df.iter().map(|d| d * d).sum();
+    if !(dd > 0.0 && dd.is_finite()) {
+        return plain();
+    }
+    let theta = f.iter().zip(&df).map(|(a, b)| a * b).sum::<f64>() / dd;
+    (0..x.len())
+        .map(|i| x[i] + beta * f[i] - theta * ((x[i] - xp[i]) + beta * df[i]))
+        .collect()
+}
+
+/// Which stiffness a curve shows (seed A Fig. 11's three cases).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StiffnessMode {
+    /// Zero-speed (static) stiffness at every speed.
+    Constant,
+    /// Quasi-static stiffness, isothermal.
+    Speed,
+    /// Quasi-static stiffness at the coupled thermal steady state.
+    Thermal,
+}
+
+impl StiffnessMode {
+    pub fn from_name(name: &str) -> Result<Self> {
+        match name {
+            "constant" => Ok(StiffnessMode::Constant),
+            "speed" => Ok(StiffnessMode::Speed),
+            "thermal" => Ok(StiffnessMode::Thermal),
+            other => Err(Error::config(
+                "mode",
+                other,
+                "must be \"constant\", \"speed\" or \"thermal\"",
+            )),
+        }
+    }
+}
+
+/// Bearing states against speed for one mode, in parallel (each speed
+/// solved independently from the static start: bit-identical for any
+/// thread count). Thermal mode also returns the thermal states. Fails with
+/// the error of the lowest-index failing speed.
+pub fn stiffness_curve_mode(
+    coupled: &CoupledBearing,
+    speeds_rpm: &[f64],
+    axial_n: f64,
+    radial_n: f64,
+    mode: StiffnessMode,
+) -> Result<Vec<(BearingState, Option<ThermalState>)>> {
+    let load = [radial_n, 0.0, axial_n, 0.0, 0.0];
+    let opts = SolveOptions {
+        offsets: RacewayOffsets::default(),
+        ..coupled.options.solve
+    };
+    let m = &coupled.model;
+    let points: Vec<Result<(BearingState, Option<ThermalState>)>> = match mode {
+        StiffnessMode::Constant => {
+            let s = m.solve_static(&load, &opts)?;
+            speeds_rpm.iter().map(|_| Ok((s.clone(), None))).collect()
+        }
+        StiffnessMode::Speed => {
+            let start = static_start_q(m, &load, &opts)?;
+            speeds_rpm
+                .par_iter()
+                .map(|&n| Ok((m.solve_from(&load, n, &opts, start, &mut WarmStart::new())?, None)))
+                .collect()
+        }
+        StiffnessMode::Thermal => speeds_rpm
+            .par_iter()
+            .map(|&n| {
+                let s = coupled.solve(n, axial_n, radial_n)?;
+                Ok((s.bearing.clone(), Some(s)))
+            })
+            .collect(),
+    };
+    points.into_iter().collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Seed A: 300 N preload + 2380.9 N axial, 1189.9 N radial (100 N m).
+    const FA: f64 = 2680.9;
+    const FR: f64 = 1189.9;
+
+    fn seed_a(effects: EffectSet) -> CoupledBearing {
+        let b = Bearing::preset("6208").unwrap();
+        let mut o = CoupledOptions::default();
+        o.solve.effects = effects;
+        CoupledBearing::seed_a(&b, o).unwrap()
+    }
+
+    fn thermal_off() -> EffectSet {
+        let mut e = EffectSet::all();
+        for x in [
+            Effect::ThermalExpansionShaft,
+            Effect::ThermalExpansionInnerRing,
+            Effect::ThermalExpansionOuterRing,
+            Effect::ThermalExpansionBalls,
+            Effect::ThermalExpansionHousing,
+        ] {
+            e = e.without(x);
+        }
+        e
+    }
+
+    #[test]
+    fn zero_heat_limit_equals_isothermal_model() {
+        let c = seed_a(thermal_off());
+        let s = c.solve(10_000.0, FA, FR).unwrap();
+        let iso = c
+            .model()
+            .solve(&[FR, 0.0, FA, 0.0, 0.0], 10_000.0, &c.options().solve)
+            .unwrap();
+        assert_eq!(s.bearing.displacement_m_rad, iso.displacement_m_rad);
+        assert_eq!(s.bearing.stiffness_matrix_si, iso.stiffness_matrix_si);
+        assert_eq!(s.raceway_offsets, RacewayOffsets::default());
+        assert!(s.heat.heat.total_w() > 0.0);
+    }
+
+    #[test]
+    fn heat_balance_at_convergence() {
+        let c = seed_a(EffectSet::all());
+        let s = c.solve(12_000.0, FA, FR).unwrap();
+        let out: f64 = s.boundary_flows_w.iter().map(|(_, q)| q).sum();
+        let h = s.heat.heat.total_w();
+        assert!((out - h).abs() < 1e-6 * h, "{out} vs {h}");
+        let sp = s.heat.split;
+        assert!((sp.inner_ring_w + sp.balls_w + sp.outer_ring_w - h).abs() < 1e-9 * h);
+        assert!(s.residual_k <= 1e-6 && s.iterations < 12, "{}", s.iterations);
+        // Heat makes every free node hotter than both boundaries.
+        for n in ["Ts", "Ti", "Tb", "To", "Th"] {
+            assert!(s.temperature_c(n).unwrap() > 26.0, "{n}");
+        }
+    }
+
+    #[test]
+    fn anderson_step_solves_a_linear_map_exactly() {
+        // G(x) = a x + b: after one plain step, the Anderson(1) (secant) step
+        // lands on the fixed point x* = b / (1 - a).
+        let (a, b) = (0.4, 3.0);
+        let x0 = [0.0];
+        let g0 = [a * x0[0] + b];
+        let x1 = anderson_step(&x0, &g0, None, 1.0);
+        let f0 = vec![g0[0] - x0[0]];
+        let g1 = [a * x1[0] + b];
+        let x2 = anderson_step(&x1, &g1, Some(&(x0.to_vec(), f0)), 1.0);
+        assert!((x2[0] - b / (1.0 - a)).abs() < 1e-12, "{x2:?}");
+    }
+
+    #[test]
+    fn runaway_rule_separates_warm_up_from_divergence() {
+        // A normal warm-up from the cold start: heat, temperatures and loads
+        // rise but each change is smaller than the last (contraction 0.3).
+        // A runaway: the same growth with changes that do not shrink.
+        let seq = |ratio: f64| -> Vec<Trend> {
+            let mut out = Vec::new();
+            let (mut t, mut d) = (40.0, 10.0);
+            for _ in 0..6 {
+                out.push(Trend {
+                    heat_w: 100.0 + t,
+                    hottest_c: t,
+                    max_load_n: 2000.0 + t,
+                    change_k: d,
+                });
+                t += d;
+                d *= ratio;
+            }
+            out
+        };
+        let grows = |v: &[Trend]| v.windows(2).filter(|w| w[1].all_grow(&w[0])).count();
+        assert_eq!(grows(&seq(0.3)), 0);
+        assert!(grows(&seq(1.2)) >= RUNAWAY_STREAK);
+    }
+
+    #[test]
+    fn heat_rises_with_speed_and_preload() {
+        // Seed A Fig. 6: heat rises with speed and with axial preload.
+        let c = seed_a(EffectSet::all());
+        let h = |n: f64, fa: f64| c.solve(n, fa, 0.0).unwrap().heat.heat.total_w();
+        assert!(h(12_000.0, 300.0) > h(6_000.0, 300.0));
+        assert!(h(10_000.0, 600.0) > h(10_000.0, 300.0));
+    }
+
+    #[test]
+    fn temperatures_rise_with_speed_and_axial_load() {
+        let c = seed_a(EffectSet::all());
+        let tb = |n: f64, fa: f64, fr: f64| c.solve(n, fa, fr).unwrap().temperature_c("Tb").unwrap();
+        assert!(tb(14_000.0, 300.0, 0.0) > tb(8_000.0, 300.0, 0.0));
+        assert!(tb(6_500.0, FA, FR) > tb(6_500.0, 300.0, FR));
+    }
+
+    #[test]
+    fn hot_bearing_beyond_lubricant_limit_is_a_runaway() {
+        let b = Bearing::preset("6208").unwrap();
+        let mut p = SeedAParams::for_bearing(&b);
+        p.lubricant.max_temperature_c = 30.0;
+        let m = seed_a_mounting(&p);
+        let c = CoupledBearing::new(&b, p, m, CoupledOptions::default()).unwrap();
+        match c.solve(15_000.0, FA, FR) {
+            Err(Error::ThermalRunaway(msg)) => assert!(msg.contains("lubricant") && msg.contains("node"), "{msg}"),
+            other => panic!("expected a runaway, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn iteration_cap_reports_convergence_error() {
+        let b = Bearing::preset("6208").unwrap();
+        let o = CoupledOptions {
+            max_iterations: 2,
+            ..CoupledOptions::default()
+        };
+        let c = CoupledBearing::seed_a(&b, o).unwrap();
+        assert!(matches!(c.solve(12_000.0, FA, FR), Err(Error::Convergence { .. })));
+    }
+
+    #[test]
+    fn spin_friction_switch_adds_spin_heat_only() {
+        let on = seed_a(EffectSet::all()).solve(12_000.0, FA, FR).unwrap();
+        let off = seed_a(EffectSet::all().without(Effect::SpinFriction))
+            .solve(12_000.0, FA, FR)
+            .unwrap();
+        assert_eq!(off.heat.heat.inner_spin_w + off.heat.heat.outer_spin_w, 0.0);
+        assert!(on.heat.heat.inner_spin_w > 0.0);
+        assert!(on.heat.heat.total_w() > off.heat.heat.total_w());
+    }
+
+    #[test]
+    fn thermal_curve_is_thread_count_independent_and_speed_mode_matches_without_expansion() {
+        let c = seed_a(thermal_off());
+        let speeds = [7_000.0, 11_000.0, 15_000.0];
+        let th = stiffness_curve_mode(&c, &speeds, FA, FR, StiffnessMode::Thermal).unwrap();
+        let sp = stiffness_curve_mode(&c, &speeds, FA, FR, StiffnessMode::Speed).unwrap();
+        for (a, b) in th.iter().zip(&sp) {
+            assert_eq!(a.0.stiffness_matrix_si, b.0.stiffness_matrix_si);
+        }
+        let c = seed_a(EffectSet::all());
+        let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
+        let a = one.install(|| stiffness_curve_mode(&c, &speeds, FA, FR, StiffnessMode::Thermal).unwrap());
+        let b = stiffness_curve_mode(&c, &speeds, FA, FR, StiffnessMode::Thermal).unwrap();
+        for (x, y) in a.iter().zip(&b) {
+            assert_eq!(x.0.stiffness_matrix_si, y.0.stiffness_matrix_si);
+        }
+        assert!(StiffnessMode::from_name("hot").is_err());
+    }
+}
