@@ -129,3 +129,12 @@ def test_rigid_steel_runaway_reported() -> None:
     assert sp.preload_kind == "rigid"
     with pytest.raises(tb.ThermalRunawayError, match="preload grew"):
         tb.thermal_state(sp, speed_rpm=18_000.0)
+
+
+def test_thermal_state_dispatches_to_a_spindle():
+    sp = tb.Spindle.preset("seed-ceramic-spindle")
+    a = tb.thermal_state(sp, speed_rpm=9000.0)
+    b = sp.thermal_state(speed_rpm=9000.0)
+    assert a.equals(b)
+    with pytest.raises(tb.ConfigError, match="axial_n"):
+        tb.thermal_state(sp, speed_rpm=9000.0, axial_n=100.0)

@@ -106,7 +106,9 @@ def test_dispatch_to_objects_with_thermal_state():
             return kw
 
     kw = tb.thermal_state(Fake(), speed_rpm=5.0, axial_n=1.0, radial_n=2.0, effects=None, extra=3)
-    assert kw == {"speed_rpm": 5.0, "axial_n": 1.0, "radial_n": 2.0, "effects": None, "extra": 3}
+    # Only what was given is passed on (a spindle keeps its own loads otherwise).
+    assert kw == {"speed_rpm": 5.0, "axial_n": 1.0, "radial_n": 2.0, "extra": 3}
+    assert tb.thermal_state(Fake(), speed_rpm=5.0) == {"speed_rpm": 5.0}
 
 
 def test_network_newton_agrees_with_scipy_fsolve(b6208):
