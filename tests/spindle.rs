@@ -130,7 +130,10 @@ fn spring_growth_raises_force_by_rate_times_growth_in_series_with_bearings() {
 fn rigid_steel_preload_runs_away_at_18000_rpm() {
     // Rigid (fixed-position) preload: the inner ring runs hotter than the
     // outer, the interference and with it the preload and heat grow.
-    let sp = Spindle::seed_b("steel").unwrap();
+    let sp = Spindle::seed_b("steel")
+        .unwrap()
+        .with_preload(Preload::Rigid { force_n: 300.0 })
+        .unwrap();
     match sp.steady_state(18_000.0) {
         Err(Error::ThermalRunaway(msg)) => assert!(msg.contains("preload grew"), "{msg}"),
         other => panic!("expected runaway, got {other:?}"),

@@ -144,3 +144,21 @@ def test_time_method_with_ball_forces_matches_frequency_method():
     assert np.allclose(
         t["velocity_rms_mm_s"].to_numpy(), t["x1_mm_s"].to_numpy() / np.sqrt(2.0), rtol=2e-2
     )
+
+
+def test_spindle_thermal_coupling_reaches_the_rotor():
+    """tb.vibration(coupled=True) on a tb.Spindle uses the raceway offsets of
+    its coupled thermal steady state; with every thermal effect off the
+    offsets vanish and the coupled result equals the uncoupled one exactly."""
+    speeds = np.array([9000.0, 15000.0])
+    sp = tb.Spindle.preset("seed-ceramic-spindle")
+    iso = sp.with_options(effects=["centrifugal_force", "gyroscopic_moment"])
+    off = iso.raceway_offsets(15000.0)
+    assert all(v == 0.0 for pair in off.values() for v in pair)
+    unc = tb.vibration(sp, speeds_rpm=speeds, coupled=False)
+    cpl_iso = tb.vibration(iso, speeds_rpm=speeds, coupled=True)
+    assert cpl_iso["velocity_rms_mm_s"].to_list() == unc["velocity_rms_mm_s"].to_list()
+    hot = sp.raceway_offsets(15000.0)
+    assert hot["front"][0] > 0.0  # inner parts run hotter: the groove centres close in
+    cpl = tb.vibration(sp, speeds_rpm=speeds, coupled=True)
+    assert cpl["velocity_rms_mm_s"].to_list() != unc["velocity_rms_mm_s"].to_list()

@@ -125,7 +125,7 @@ def test_bad_input(ceramic: tb.Spindle) -> None:
 
 
 def test_rigid_steel_runaway_reported() -> None:
-    sp = tb.Spindle.preset("seed-steel-spindle")
+    sp = tb.Spindle.preset("seed-steel-spindle").with_options(preload_kind="rigid", preload_n=300.0)
     assert sp.preload_kind == "rigid"
     with pytest.raises(tb.ThermalRunawayError, match="preload grew"):
         tb.thermal_state(sp, speed_rpm=18_000.0)

@@ -148,6 +148,30 @@ class Spindle:
 
     _thermal_state = thermal_state
 
+    # -- the seam to the rotor model (thermobear.rotor) ---------------------
+    @property
+    def rotor_preset_name(self) -> str:
+        """The rotor model of this spindle for :func:`thermobear.campbell`,
+        :func:`thermobear.vibration` and :func:`thermobear.spectrum`."""
+        from .errors import ConfigError
+
+        name = self.name
+        if name not in ("seed-ceramic-spindle", "seed-steel-spindle"):
+            raise ConfigError(
+                f"invalid spindle = {name!r}: the rotor model has hybrid and steel rows only"
+            )
+        return name
+
+    def raceway_offsets(self, speed_rpm: float) -> dict[str, tuple[float, float]]:
+        """Thermal groove-centre offsets ``(radial_m, axial_m)`` of the front
+        and rear rows at the coupled steady state of ``speed_rpm`` (the values
+        the coupled bearing solve uses, A-38). Makes ``coupled=True`` work in
+        the rotor functions."""
+        d = self._native.steady_state(float(speed_rpm))
+        front = tuple(float(v) for v in d["front_raceway_offsets_m"])
+        rear = tuple(float(v) for v in d["rear_raceway_offsets_m"])
+        return {"front": front, "rear": rear}
+
     def isothermal(self, speed_rpm: float) -> Any:
         """Front pair without thermal effects at speed (one-row DataFrame)."""
         import polars as pl

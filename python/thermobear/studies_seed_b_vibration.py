@@ -1,11 +1,11 @@
 """Seed B's spindle vibration study: Campbell diagram, vibration velocity
-against speed (uncoupled, and a labelled thermal-offset sensitivity case),
-the 12,000 rpm spectrum, and the paper-vs-thermobear table.
+against speed (uncoupled, and thermally coupled through the raceway offsets
+of :class:`thermobear.Spindle`'s coupled steady state), the 12,000 rpm
+spectrum, and the paper-vs-thermobear table.
 
 Nothing here is tuned to the paper: the spindle dimensions are the
-documented assumptions of ``src/rotor/presets.rs``, the unbalance is ISO
-21940 G2.5 at 30,000 rpm, and the thermal offsets of the sensitivity case
-are an assumption stated in :class:`AssumedThermalOffsets`.
+documented assumptions of ``src/rotor/presets.rs`` and
+``src/thermal/presets.rs``, the unbalance is ISO 21940 G2.5 at 30,000 rpm.
 """
 
 from __future__ import annotations
@@ -15,34 +15,9 @@ from pathlib import Path
 import numpy as np
 
 from . import rotor
+from .spindle import Spindle
 
-__all__ = ["AssumedThermalOffsets", "study_seed_b_vibration"]
-
-#: Seed B (001_..., "thermal displacement" paragraph): radial thermal
-#: displacement of the 7009 front bearing at 18,000 rpm, steady state [m].
-SEED_B_RADIAL_THERMAL_DISPLACEMENT_M = {
-    "seed-steel-spindle": 16.68e-6,
-    "seed-ceramic-spindle": 8.2e-6,
-}
-
-
-class AssumedThermalOffsets:
-    """ASSUMPTION, not a thermal model: radial groove-centre offset of both
-    pairs = seed B's reported radial thermal displacement of the front
-    bearing at 18,000 rpm (16.68 um steel, 8.2 um ceramic), scaled with
-    (speed / 18,000 rpm)^2; axial offset taken equal to it (under the
-    constant-force preload it only shifts the ring axially). The rear pair
-    runs cooler in seed B, so applying the front value to it overstates
-    its offset. Follows the spindle protocol of :mod:`thermobear.rotor`."""
-
-    def __init__(self, rotor_preset_name: str, preload_n: float = 400.0) -> None:
-        self.rotor_preset_name = rotor_preset_name
-        self.preload_n = preload_n
-        self._u18 = SEED_B_RADIAL_THERMAL_DISPLACEMENT_M[rotor_preset_name]
-
-    def raceway_offsets(self, speed_rpm: float) -> dict:
-        u = self._u18 * (speed_rpm / 18_000.0) ** 2
-        return {"front": (u, u), "rear": (u, u)}
+__all__ = ["study_seed_b_vibration"]
 
 
 def _paper_table(ours: dict) -> "polars.DataFrame":  # noqa: F821
@@ -52,8 +27,14 @@ def _paper_table(ours: dict) -> "polars.DataFrame":  # noqa: F821
         (
             "velocity_18000rpm_coupled_sim_mm_s",
             18.78,
-            ours["v18_offset"],
-            "labelled offset case, G2.5, RMS",
+            ours["v18_coupled"],
+            "ours: thermally coupled spindle (tb.Spindle offsets), G2.5, RMS",
+        ),
+        (
+            "coupling_raises_velocity_18000rpm_pct",
+            100.0 * (18.78 - (18.92 - 2.82)) / (18.92 - 2.82),
+            100.0 * (ours["v18_coupled"] / ours["v18_uncoupled"] - 1.0),
+            "paper: uncoupled = measured - 2.82 mm/s max error; ours: coupled vs uncoupled",
         ),
         (
             "velocity_18000rpm_measured_mm_s",
@@ -103,9 +84,9 @@ Assumptions that differ from seed B (its spindle tables are missing):
   this stiff spindle (with the placeholder 1e8 N/m bearings it was ~0.007 mm/s, ~2700x below).
   The measurement may contain excitations we do not model (housing and stator structure, motor
   electromagnetic forces, bearing waviness, sensor on the housing). We do not scale the unbalance.
-- Coupled case: no thermal model of the spindle on this branch; the 'offset' case uses seed B's
-  reported radial thermal displacement (16.68 um steel / 8.2 um ceramic at 18,000 rpm) scaled with
-  speed^2 as the raceway offset of both pairs (an assumption, labelled as such).
+- Coupled case: the raceway offsets of the coupled thermal steady state of tb.Spindle (spring
+  preload 400 N, seed B network assumptions in src/thermal/presets.rs) at each speed, applied to
+  the rotor's rows, which keep a constant 400 N preload (the spring's compensation is not passed).
 - Seed B's 1X of 196.6 Hz corresponds to 11,796 rpm; we run at exactly 12,000 rpm (200 Hz).
 """
 
@@ -133,11 +114,9 @@ def study_seed_b_vibration(out: Path, quick: bool = False) -> list[Path]:
     frames, labels = [], []
     for preset in ("seed-ceramic-spindle", "seed-steel-spindle"):
         unc = rotor.vibration(preset, speeds, coupled=False, unbalance_grade=2.5)
-        off = rotor.vibration(
-            AssumedThermalOffsets(preset), speeds, coupled=True, unbalance_grade=2.5
-        )
-        frames += [unc, off]
-        labels += [f"{preset}: uncoupled", f"{preset}: assumed thermal offsets"]
+        cpl = rotor.vibration(Spindle.preset(preset), speeds, coupled=True, unbalance_grade=2.5)
+        frames += [unc, cpl]
+        labels += [f"{preset}: uncoupled", f"{preset}: thermally coupled"]
     table = pl.concat(
         [f.with_columns(pl.lit(lab).alias("case")) for f, lab in zip(frames, labels)],
         how="diagonal",
@@ -162,7 +141,7 @@ def study_seed_b_vibration(out: Path, quick: bool = False) -> list[Path]:
     fwd = crit.filter(pl.col("whirl") == "forward")
     ours = {
         "v18_uncoupled": at18(frames[0]),
-        "v18_offset": at18(frames[1]),
+        "v18_coupled": at18(frames[1]),
         "f1": 200.0,
         "x1": float(orders["velocity_mm_s"][0]),
         "x2": float(orders["velocity_mm_s"][1]),

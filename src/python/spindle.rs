@@ -89,6 +89,23 @@ fn state_dict<'py>(py: Python<'py>, sp: &Spindle, s: &SpindleState) -> PyResult<
         s.front_radial_thermal_displacement_m(a0),
     )?;
     d.set_item("front_ball_growth_m", s.front_offsets.ball_diameter_growth_m)?;
+    // The groove-centre offsets the coupled solve applied to each row,
+    // [radial, axial] in m: the seam to the rotor model (thermobear.rotor).
+    let rear_a0 = sp.config.params.rear_bearing.geometry.free_contact_angle_rad;
+    d.set_item(
+        "front_raceway_offsets_m",
+        vec![
+            s.front_offsets.radial_with_gap_m(a0),
+            s.front_offsets.axial_with_gap_m(a0),
+        ],
+    )?;
+    d.set_item(
+        "rear_raceway_offsets_m",
+        vec![
+            s.rear_offsets.radial_with_gap_m(rear_a0),
+            s.rear_offsets.axial_with_gap_m(rear_a0),
+        ],
+    )?;
     d.set_item("iterations", s.iterations)?;
     d.set_item("temperature_change_k", s.temperature_change_k)?;
     Ok(d)

@@ -99,7 +99,12 @@ impl SpindleConfig {
         let ambient = params.ambient_temperature_c;
         Ok(SpindleConfig {
             params,
-            preload: Preload::Rigid { force_n: 300.0 },
+            // Seed B's test rig: 400 N preload by a spring pack whose rate
+            // follows from its Fig. 17 (6.45 N for 17.92 um).
+            preload: Preload::Spring {
+                force_n: 400.0,
+                rate_n_per_m: SEED_B_SPRING_RATE_N_PER_M,
+            },
             radial_load_n: 0.0,
             spin_friction: DEFAULT_SPIN_FRICTION,
             assembly_temperature_c: ambient,
