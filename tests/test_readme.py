@@ -12,5 +12,6 @@ def test_readme_python_blocks_run():
     text = (Path(__file__).resolve().parents[1] / "README.md").read_text()
     blocks = re.findall(r"```python\n(.*?)```", text, re.S)
     assert blocks
+    namespace: dict = {}  # blocks build on each other, as a reader runs them
     for code in blocks:
-        exec(compile(code, "README.md", "exec"), {})
+        exec(compile(code, "README.md", "exec"), namespace)
