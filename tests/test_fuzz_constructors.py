@@ -84,3 +84,25 @@ def test_material_constructor_never_panics(e, nu, rho, alpha, k, c):
     except tb.ConfigError:
         return
     assert m.youngs_modulus_gpa > 0 and 0 <= m.poisson_ratio < 0.5
+
+
+@settings(max_examples=150, deadline=None)
+@given(
+    preset=st.sampled_from(["6208", "7009C-hybrid", "7008C"]),
+    fa=st.one_of(st.floats(min_value=-5e3, max_value=2e4), st.just(float("nan"))),
+    fr=st.floats(min_value=-5e3, max_value=2e4),
+    speed=st.one_of(st.floats(min_value=-100.0, max_value=60000.0), st.just(float("inf"))),
+)
+def test_solve_never_panics_or_returns_nan(preset, fa, fr, speed):
+    """Any load and speed gives a finite solution or a thermobear error."""
+    import numpy as np
+
+    b = tb.Bearing.preset(preset)
+    try:
+        s = b.solve(axial_n=fa, radial_n=fr, speed_rpm=speed)
+    except (tb.ConfigError, tb.ConvergenceError):
+        return
+    assert np.all(np.isfinite(s.displacement))
+    assert np.all(np.isfinite(s.stiffness))
+    for col in s.balls.columns:
+        assert np.all(np.isfinite(s.balls[col].to_numpy())), col
