@@ -113,6 +113,7 @@ def test_candidate_registry_bounds_contain_the_null(baseline):
     assert "spin_friction" not in c.filter(pl.col("kind") == "switch")["name"].to_list()
     every = tb.candidates()
     assert set(tb.effects()["name"]) <= set(every["name"])
+    assert every["name"].n_unique() == every.height  # a verdict names one candidate
 
 
 def test_residual_shape_by_aic():

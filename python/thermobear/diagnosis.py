@@ -92,7 +92,7 @@ _PARAMETERS = (
         "viscous/churning loss scale (Palmgren f0)",
     ),
     (
-        "spin_friction",
+        "spin_friction_coefficient",
         "spin_friction",
         "1",
         0.0,
@@ -631,8 +631,8 @@ def _fit(curve: _Curve, y, s, train) -> dict:
         return {
             "value": 1.0,
             "chi2": _chi2(r[train]),
-            "lower_95": np.nan,
-            "upper_95": np.nan,
+            "lower_95": None,
+            "upper_95": None,
             "pred": curve.preds[-1],
             "at_bound": False,
             "excludes_null": True,
@@ -723,9 +723,13 @@ class Diagnosis:
     def summary(self) -> str:
         lines = [f"verdict: {self.verdict}"]
         for a in self.accepted:
+            interval = (
+                f" [{a['lower_95']:.4g}, {a['upper_95']:.4g}]{_unit(a['unit'])}"
+                if a["lower_95"] is not None
+                else " (switched on)"
+            )
             lines.append(
-                f"  accepted {a['name']}: {a['parameter']} = {a['value']:.4g} "
-                f"[{a['lower_95']:.4g}, {a['upper_95']:.4g}]{_unit(a['unit'])}, "
+                f"  accepted {a['name']}: {a['parameter']} = {a['value']:.4g}{interval}, "
                 f"delta-BIC {a['delta_bic']:.1f}"
             )
         if self.tie:
@@ -802,7 +806,7 @@ def _gap_table(df, r0, r1, mask):
     )
 
 
-def _audit(df, r, train):
+def _audit(df, r):
     import polars as pl
 
     sp, q = df["speed_rpm"].to_numpy(), df["quantity"].to_numpy()
@@ -923,12 +927,11 @@ def diagnose(
                 raise ConfigError(f"invalid candidate = {n!r}: known: {', '.join(sorted(names))}")
         pool = [c for c in pool if c.name in set(candidates)]
     base_options = dict(model.options)
-    st = _Setting(model.effects, tuple(sorted(base_options.items())), ())
-    # the effects of the spec are already in `model`; the setting adds to them
+    # the spec already carries the baseline effects and options; a setting adds to them
     st = _Setting((), (), ())
     pred0 = _predict(model, st, cond, quantity)
     r0 = (y - pred0) / s
-    audit = _audit(df, r0, train)
+    audit = _audit(df, r0)
     notes, screening, accepted, tie = [], [], [], []
     not_evaluable = [c.name for c in pool if c.affects == ("rotor vibration only",)]
     pool = [c for c in pool if c.name not in not_evaluable]
@@ -1066,7 +1069,7 @@ def diagnose(
                 + (
                     f" ({a['parameter']} = {a['value']:.4g}{_unit(a['unit'])}, 95 % "
                     f"[{a['lower_95']:.4g}, {a['upper_95']:.4g}])"
-                    if np.isfinite(a["lower_95"])
+                    if a["lower_95"] is not None
                     else ""
                 )
             )
