@@ -224,3 +224,27 @@ def test_diagnosis_tables_plots_and_cli(tmp_path, baseline):
     bad = tmp_path / "bad.csv"
     pl.DataFrame({"speed_rpm": [1.0], "quantity": ["x"], "value": [1.0]}).write_csv(bad)
     assert main(["diagnose", str(bad), "--model", str(toml)]) == 2
+
+
+def test_two_effects_at_once_named_and_jointly_calibrated(baseline):
+    """A churning loss and a sensor offset on To together: both are
+    accepted over two rounds, then calibrated jointly (the f0 of round 1
+    absorbed part of the offset); the joint interval covers the truth."""
+
+    def offset(cond, sig):
+        return np.where(cond["quantity"].to_numpy() == "temperature_c:To", 2.0, 0.0)
+
+    truth = baseline.with_setting(lubrication_factor_f0=1.3)
+    both = covered = 0
+    for seed in range(10):
+        d = tb.diagnose(baseline, _measured(truth, 6000 + seed, offset))
+        names = [a["name"] for a in d.accepted]
+        if sorted(names) == ["lubrication_factor_f0", "sensor_offset:temperature_c:To"]:
+            both += 1
+            f0 = d.accepted[names.index("lubrication_factor_f0")]
+            off = d.accepted[names.index("sensor_offset:temperature_c:To")]
+            covered += f0["lower_95"] <= 1.3 <= f0["upper_95"] and (
+                off["lower_95"] <= 2.0 <= off["upper_95"]
+            )
+    assert both >= 9
+    assert covered >= 7

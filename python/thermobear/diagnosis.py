@@ -888,6 +888,55 @@ def _suggest(model, st, ca, cb, fa, fb, df, base_options):
     return where
 
 
+def _joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_options):
+    """Re-calibrate every accepted continuous parameter together (bounded
+    least squares on the model itself, not the interpolant) once two or more
+    are accepted: an effect calibrated alone absorbs part of the next one.
+    Intervals: +-1.96 standard errors from the Jacobian, (J^T J)^-1.
+    Updates ``accepted`` in place; returns (setting, prediction) or None."""
+    from scipy.optimize import least_squares
+
+    idx = [i for i, c in enumerate(cands) if c.kind == "parameter"]
+    if len(idx) < 2:
+        return None
+
+    def setting(theta):
+        st = _Setting((), (), ())
+        vals = {i: t for i, t in zip(idx, theta)}
+        for i, c in enumerate(cands):
+            st = st.apply(c, float(vals.get(i, accepted[i]["value"])), base_options)
+        return st
+
+    def resid(theta):
+        return ((y - _predict(model, setting(theta), cond, quantity)) / s)[train]
+
+    x0 = np.array([accepted[i]["value"] for i in idx])
+    lo = np.array([cands[i].lower for i in idx])
+    hi = np.array([cands[i].upper for i in idx])
+    try:
+        res = least_squares(
+            resid,
+            np.clip(x0, lo, hi),
+            bounds=(lo, hi),
+            diff_step=1e-4,
+            x_scale=hi - lo,
+            max_nfev=60,
+        )
+        cov = np.linalg.inv(res.jac.T @ res.jac)
+    except (ThermobearError, np.linalg.LinAlgError):
+        return None
+    se = np.sqrt(np.clip(np.diag(cov), 0.0, None))
+    for k, i in enumerate(idx):
+        accepted[i].update(
+            value=float(res.x[k]),
+            lower_95=float(max(lo[k], res.x[k] - 1.96 * se[k])),
+            upper_95=float(min(hi[k], res.x[k] + 1.96 * se[k])),
+            joint=True,
+        )
+    st = setting(res.x)
+    return st, _predict(model, st, cond, quantity)
+
+
 def diagnose(
     model: BearingModelSpec,
     measured: Any,
@@ -938,6 +987,7 @@ def diagnose(
     if not_evaluable:
         notes.append("not in the single-bearing model: " + ", ".join(not_evaluable))
     pred = pred0
+    accepted_cands: list[Candidate] = []
     fingerprints = lookalikes = None
     verdict = ""
     for rnd in range(max_rounds):
@@ -1055,6 +1105,12 @@ def diagnose(
         st = st.apply(c, best["value"], base_options)
         pred = fits[c.name]["pred"]
         pool = [p for p in pool if p.name != c.name]
+        accepted_cands.append(c)
+        joint = _joint_refit(
+            model, accepted_cands, accepted, cond, quantity, y, s, train, base_options
+        )
+        if joint is not None:
+            st, pred = joint
     r1 = (y - pred) / s
     p_final = float(chi2_dist.sf(_chi2(r1[train]), n_train))
     physical = [a for a in accepted if a["side"] == "model"]
