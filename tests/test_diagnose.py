@@ -248,3 +248,24 @@ def test_two_effects_at_once_named_and_jointly_calibrated(baseline):
             )
     assert both >= 9
     assert covered >= 7
+
+
+def test_holdout_by_run_and_lookalikes(baseline):
+    meas = _measured(baseline.with_setting(lubrication_factor_f0=1.5), 11)
+    runs = np.where(np.arange(meas.height) % 2 == 0, "a", "b")
+    meas = meas.with_columns(pl.Series("run", runs))
+    d = tb.diagnose(baseline, meas, holdout=["b"])
+    assert d.points.filter(pl.col("heldout"))["run"].unique().to_list() == ["b"]
+    assert [a["name"] for a in d.accepted] == ["lubrication_factor_f0"]
+    with pytest.raises(tb.DataError, match="run"):
+        tb.diagnose(baseline, meas, holdout=["c"])
+    # cast iron and steel housings: both iron alloys, conductivity and
+    # expansion close -> look-alike fingerprints (cosine > 0.99)
+    la = d.lookalikes.filter(
+        (pl.col("a") == "housing_material:cast-iron")
+        & (pl.col("b") == "housing_material:shaft-steel")
+    )
+    assert la.height == 1 and la["cosine"][0] > 0.99
+    assert la["suggest_quantity"][0] in D.QUANTITIES
+    cos = d.fingerprints["cosine"].to_numpy()
+    assert np.all(np.abs(cos) <= 1.0 + 1e-12)
