@@ -12,6 +12,7 @@ from __future__ import annotations
 from . import _native
 from .bearing import Bearing, BearingSolution, Material, stiffness_curve
 from .config import load_config, seed_config, seed_config_names
+from .diagnosis import BearingModelSpec, Diagnosis, candidates, diagnose, load_measurements
 from .errors import (
     ConfigError,
     ConvergenceError,
@@ -59,7 +60,12 @@ __all__ = [
     "spectrum_orders",
     "vibration",
     "Bearing",
+    "BearingModelSpec",
     "BearingSolution",
+    "Diagnosis",
+    "candidates",
+    "diagnose",
+    "load_measurements",
     "ConfigError",
     "ConvergenceError",
     "DataError",

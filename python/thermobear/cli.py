@@ -41,6 +41,17 @@ def _cmd_effects(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_diagnose(args: argparse.Namespace) -> int:
+    from .diagnosis import diagnose_files
+
+    out = Path(args.out) if args.out else None
+    d, files = diagnose_files(Path(args.measured), Path(args.model), out)
+    print(d.summary())
+    if out is not None:
+        print(f"thermobear diagnose: {len(files)} files written to {out.resolve()}")
+    return 0
+
+
 def main(argv: Optional[Sequence[str]] = None) -> int:
     p = argparse.ArgumentParser(
         prog="thermobear",
@@ -61,6 +72,11 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     sub.add_parser("effects", help="list the named physical effects").set_defaults(
         func=_cmd_effects
     )
+    g = sub.add_parser("diagnose", help="name the effect missing between model and measurements")
+    g.add_argument("measured", help="tidy measurement table (.csv or .parquet)")
+    g.add_argument("--model", required=True, help="system description (.toml) of the baseline")
+    g.add_argument("--out", default=None, help="folder for tables and figures")
+    g.set_defaults(func=_cmd_diagnose)
     args = p.parse_args(argv)
     from .errors import ThermobearError
 

@@ -151,6 +151,7 @@ STUDIES: list[tuple[str, str]] = [
     ("seed_b_vibration", "studies_seed_b_vibration:study_seed_b_vibration"),
     ("seed_b_spindle", "studies_seed_b:study_seed_b_spindle"),
     ("seed_a_thermal", "studies_seed_a:study_seed_a_thermal"),
+    ("diagnose_synthetic", "studies_diagnose:study_diagnose"),
 ]
 
 

@@ -161,6 +161,7 @@ def regime_map(
     return ax
 
 
+from .plot_diagnose import diagnosis_fit, diagnosis_residuals  # noqa: E402, F401
 from .plot_rotor import campbell, spectrum, vibration  # noqa: E402,F401  (rotor figures)
 from .plot_spindle import *  # noqa: E402,F401,F403
 from .plot_thermal import heat_vs_speed, node_temperatures, thermal_deformations  # noqa: E402, F401
