@@ -18,7 +18,8 @@ Candidates: every effect the baseline leaves off as a switch, plus
 ``thermal_displacement`` (the five thermal-expansion effects together:
 seed B's "model with thermal displacement"), the spin friction coefficient,
 the preload kind (rigid <-> constant-force spring), the spring rate when the
-preload is a spring, and one sensor-offset decoy per measured quantity.
+preload is a spring, the rotor's residual unbalance grade (G0.4-G6.3), and
+one sensor-offset decoy per measured quantity.
 """
 
 from __future__ import annotations
@@ -81,6 +82,11 @@ _VIB = "velocity_rms_mm_s"
 #: springs by an order of magnitude each way (assumed range).
 _SPIN_BOUNDS = (0.0, 0.3)
 _SPRING_BOUNDS = (0.05, 3.0)
+#: Residual unbalance grade of the rotor [mm/s]: ISO 21940-11 balance
+#: quality grades from G0.4 (precision grinding spindles) to G6.3 (the
+#: coarsest grade the standard's table suggests for machine-tool parts and
+#: electric motors); a rotor outside this range is not a finished spindle.
+_UNBALANCE_BOUNDS = (0.4, 6.3)
 _OPTIONS = ("spin_friction", "preload_kind", "spring_rate_n_per_um", "unbalance_grade")
 
 
@@ -159,7 +165,9 @@ class SpindleModelSpec(BearingModelSpec):
         )
 
     def _state(self, preload_n: float, speed_rpm: float) -> dict:
-        key = ("state", self._key(), preload_n, speed_rpm)
+        # the rotor's unbalance does not enter the thermal model
+        opts = tuple(sorted((k, str(v)) for k, v in self.options.items() if k != "unbalance_grade"))
+        key = ("state", self.effects, opts, preload_n, speed_rpm)
         if key not in self._cache:
             sp = self.configured(preload_n)
             try:
@@ -370,6 +378,22 @@ def _spindle_candidate_list(model: Optional[SpindleModelSpec], quantities: Seque
                 option="spring_rate_n_per_um",
             )
         )
+    g = _on_grid(float(opts["unbalance_grade"]), *_UNBALANCE_BOUNDS)
+    out.append(
+        Candidate(
+            "unbalance_grade",
+            "parameter",
+            "model",
+            "unbalance_grade",
+            "mm/s",
+            min(_UNBALANCE_BOUNDS[0], g),
+            max(_UNBALANCE_BOUNDS[1], g),
+            g,
+            "residual unbalance of the rotor (ISO 21940 grade at 30,000 rpm)",
+            (_VIB,),
+            option="unbalance_grade",
+        )
+    )
     for q in quantities:
         typ, rel = SPINDLE_QUANTITIES[q][3], SPINDLE_QUANTITIES[q][4]
         unit = "K" if q.startswith("temperature_c") else q.rsplit("_", 1)[-1]

@@ -112,9 +112,11 @@ def plain_reading(d, measured_mm_s, ours_mm_s, ours_coupled_mm_s, paper) -> str:
         f"the measured vibration {measured_mm_s:.2f} mm/s at 18,000 rpm is {ratio:.0f} times "
         f"our model's {ours_mm_s:.4f} mm/s without thermal displacement "
         f"({ours_coupled_mm_s:.4f} mm/s with it; the paper's models give {paper[0]:.2f} and "
-        f"{paper[1]:.2f}). Our rotor is excited by a G2.5 residual unbalance only; no "
-        "candidate effect comes near a factor of that size, so the vibration residual stays "
-        "unexplained. "
+        f"{paper[1]:.2f}). Our rotor is excited by a G2.5 residual unbalance only and its "
+        "steady response is linear in the unbalance: matching 18.92 mm/s would take grade "
+        f"G{2.5 * ratio:.0f}, far outside the G0.4-G6.3 bounds of the unbalance candidate "
+        "(which ends at its upper bound without support). No candidate effect comes near a "
+        "factor of that size, so the vibration residual stays unexplained. "
     )
     if d.accepted:
         names = ", ".join(a["name"] for a in d.accepted)
