@@ -82,6 +82,9 @@ def test_predictions_equal_direct_model_calls(spindle, base):
         np.testing.assert_allclose(
             p["velocity_rms_mm_s"], direct["velocity_rms_mm_s"].to_numpy(), rtol=1e-12
         )
+    # the steady unbalance response is linear: twice the grade, twice the velocity
+    g5 = coupled.with_setting(unbalance_grade=5.0).predict(cond)["velocity_rms_mm_s"]
+    np.testing.assert_allclose(g5, 2.0 * coupled.predict(cond)["velocity_rms_mm_s"], rtol=1e-9)
     # without thermal expansion there is no thermal axial growth
     assert np.all(base.predict(cond)["axial_growth_um"] == 0.0)
     assert np.all(coupled.predict(cond)["axial_growth_um"] > 10.0)
