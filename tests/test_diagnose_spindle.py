@@ -139,6 +139,8 @@ def test_registry_is_restored_and_bad_input_rejected(spindle, base):
         tb.SpindleModelSpec(spindle, spin_friction=-0.1)
     with pytest.raises(ConfigError, match="model"):
         tb.diagnose_spindle(tb.BearingModelSpec(tb.Bearing.preset("7008C")), _conditions())
+    with pytest.raises(ConfigError, match="radial_n"):
+        base.predict(pl.DataFrame({"speed_rpm": [9000.0], "axial_n": [400.0], "radial_n": [50.0]}))
     bad = _conditions().with_columns(pl.lit("temperature_c:To").alias("quantity"), value=30.0)
     with pytest.raises(DataError, match="quantity"):
         tb.load_spindle_measurements(bad)

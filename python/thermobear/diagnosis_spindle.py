@@ -213,6 +213,12 @@ class SpindleModelSpec(BearingModelSpec):
         name -> array. The vibration is computed only when asked for (the
         returned mapping evaluates it on first access)."""
         sp = conditions["speed_rpm"].to_numpy().astype(float)
+        if "radial_n" in conditions.columns and np.any(conditions["radial_n"].to_numpy() != 0.0):
+            r = float(conditions["radial_n"].to_numpy()[conditions["radial_n"].to_numpy() != 0][0])
+            raise ConfigError(
+                f"invalid radial_n = {r}: a spindle's radial load is a setting of the "
+                "Spindle (with_options(radial_load_n=...)), not a measured condition"
+            )
         col = "axial_n" if "axial_n" in conditions.columns else "preload_n"
         pre = conditions[col].to_numpy().astype(float)
         out = {q: np.empty(len(sp)) for q in SPINDLE_QUANTITIES if q != _VIB}
