@@ -213,8 +213,9 @@ class SpindleModelSpec(BearingModelSpec):
         name -> array. The vibration is computed only when asked for (the
         returned mapping evaluates it on first access)."""
         sp = conditions["speed_rpm"].to_numpy().astype(float)
-        if "radial_n" in conditions.columns and np.any(conditions["radial_n"].to_numpy() != 0.0):
-            r = float(conditions["radial_n"].to_numpy()[conditions["radial_n"].to_numpy() != 0][0])
+        radial = conditions["radial_n"].to_numpy() if "radial_n" in conditions.columns else []
+        if np.any(np.asarray(radial) != 0.0):
+            r = float(np.asarray(radial)[np.asarray(radial) != 0.0][0])
             raise ConfigError(
                 f"invalid radial_n = {r}: a spindle's radial load is a setting of the "
                 "Spindle (with_options(radial_load_n=...)), not a measured condition"
