@@ -13,6 +13,13 @@ from . import _native
 from .bearing import Bearing, BearingSolution, Material, stiffness_curve
 from .config import load_config, seed_config, seed_config_names
 from .diagnosis import BearingModelSpec, Diagnosis, candidates, diagnose, load_measurements
+from .diagnosis_spindle import (
+    SpindleModelSpec,
+    diagnose_spindle,
+    load_spindle_measurements,
+    seed_b_measurements,
+    spindle_candidates,
+)
 from .errors import (
     ConfigError,
     ConvergenceError,
@@ -66,6 +73,11 @@ __all__ = [
     "candidates",
     "diagnose",
     "load_measurements",
+    "SpindleModelSpec",
+    "diagnose_spindle",
+    "load_spindle_measurements",
+    "seed_b_measurements",
+    "spindle_candidates",
     "ConfigError",
     "ConvergenceError",
     "DataError",

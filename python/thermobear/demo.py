@@ -152,6 +152,7 @@ STUDIES: list[tuple[str, str]] = [
     ("seed_b_spindle", "studies_seed_b:study_seed_b_spindle"),
     ("seed_a_thermal", "studies_seed_a:study_seed_a_thermal"),
     ("diagnose_synthetic", "studies_diagnose:study_diagnose"),
+    ("diagnose_seed_b", "studies_diagnose_seed_b:study_diagnose_seed_b"),
 ]
 
 
