@@ -334,3 +334,16 @@ def test_calibration_inputs_reach_the_thermal_model(bearing):
     for name in ("extra_heat_w", "housing_conductance_scale"):
         row = c.filter(pl.col("name") == name)
         assert row["kind"][0] == "parameter" and row["lower"][0] <= row["default"][0]
+
+
+def test_model_section_carries_the_calibration_inputs():
+    text = tb.seed_config("seed_b_7009c")
+    assert "[model]" in text
+    text = text.replace(
+        "[model]", "[model]\nextra_heat_w = 7.5\nhousing_conductance_scale = 2.0", 1
+    )
+    spec, _ = D.model_from_toml(text)
+    assert spec.options["extra_heat_w"] == 7.5
+    assert spec.options["housing_conductance_scale"] == 2.0
+    with pytest.raises(tb.ThermobearError, match="extra_heat"):
+        D.model_from_toml(text.replace("extra_heat_w =", "extra_heat ="))

@@ -1203,8 +1203,9 @@ def diagnose(
 
 def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, dict]:
     """The baseline :class:`BearingModelSpec` of a system description
-    ([bearing], [model] effects and raceway_control; the thermal options take
-    their :func:`thermobear.thermal_state` defaults) and its [operating]
+    ([bearing], [model] effects, raceway_control, extra_heat_w and
+    housing_conductance_scale; the other thermal options take their
+    :func:`thermobear.thermal_state` defaults) and its [operating]
     table (loads for measurements that give none)."""
     from .bearing import Bearing
     from .config import load_config
@@ -1216,6 +1217,9 @@ def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, d
     opts = {}
     if "raceway_control" in mdl:
         opts["raceway_control"] = mdl["raceway_control"]
+    for key in ("extra_heat_w", "housing_conductance_scale"):
+        if key in mdl:
+            opts[key] = float(mdl[key])
     spec = BearingModelSpec(Bearing.from_toml(text), effects=mdl.get("effects"), **opts)
     return spec, cfg.get("operating", {})
 

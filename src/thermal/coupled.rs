@@ -111,7 +111,8 @@ impl Default for CoupledOptions {
 }
 
 impl CoupledOptions {
-    fn validate(&self) -> Result<()> {
+    /// Check every field (bad values name their field).
+    pub fn validate(&self) -> Result<()> {
         positive("lubrication_factor_f0", self.lubrication_factor_f0)?;
         non_negative("spin_friction", self.spin_friction)?;
         if let Some(t) = self.reference_temperature_c {
