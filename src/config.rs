@@ -26,6 +26,8 @@
 //!
 //! [model]
 //! effects = ["centrifugal_force", "gyroscopic_moment", "ring_centrifugal_expansion"]
+//! extra_heat_w = 0.0               # optional coupled-thermal calibration inputs
+//! housing_conductance_scale = 1.0
 //! ```
 
 use serde::Deserialize;
@@ -120,6 +122,12 @@ pub struct ModelConfig {
     pub effects: Option<Vec<String>>,
     /// "outer" (default) or "inner" raceway control.
     pub raceway_control: Option<String>,
+    /// Extra heat at the bearing [W] (coupled thermal model; see
+    /// [`crate::thermal::coupled::CoupledOptions::extra_heat_w`]).
+    pub extra_heat_w: Option<f64>,
+    /// Housing-to-ambient conductance scale (coupled thermal model; see
+    /// [`crate::thermal::coupled::CoupledOptions::housing_conductance_scale`]).
+    pub housing_conductance_scale: Option<f64>,
 }
 
 impl SystemConfig {
@@ -159,6 +167,25 @@ impl SystemConfig {
             Some(names) => EffectSet::from_names(names),
             None => Ok(EffectSet::all()),
         }
+    }
+
+    /// The coupled thermal options with the `[model]` calibration inputs
+    /// applied to `base` (validated: bad values name their key).
+    pub fn coupled_options(
+        &self,
+        base: crate::thermal::coupled::CoupledOptions,
+    ) -> Result<crate::thermal::coupled::CoupledOptions> {
+        let mut o = base;
+        if let Some(m) = &self.model {
+            if let Some(e) = m.extra_heat_w {
+                o.extra_heat_w = e;
+            }
+            if let Some(k) = m.housing_conductance_scale {
+                o.housing_conductance_scale = k;
+            }
+        }
+        o.validate()?;
+        Ok(o)
     }
 
     /// The speeds of `[sweep]`.
@@ -408,5 +435,23 @@ mod tests {
         assert!(bad.bearing().unwrap_err().to_string().contains("inner_conformity"));
         let bad = SystemConfig::from_toml("[model]\neffects = [\"warp_drive\"]\n").unwrap();
         assert!(bad.effects().unwrap_err().to_string().contains("warp_drive"));
+    }
+
+    #[test]
+    fn model_thermal_calibration_inputs_parse_and_validate() {
+        use crate::thermal::coupled::CoupledOptions;
+        let with = |body: &str| SystemConfig::from_toml(&format!("[model]\n{body}\n")).unwrap();
+        let o = with("extra_heat_w = 12.5\nhousing_conductance_scale = 2.0")
+            .coupled_options(CoupledOptions::default())
+            .unwrap();
+        assert_eq!((o.extra_heat_w, o.housing_conductance_scale), (12.5, 2.0));
+        // Absent keys keep the baseline.
+        let d = with("").coupled_options(CoupledOptions::default()).unwrap();
+        assert_eq!(d, CoupledOptions::default());
+        match with("extra_heat_w = -3.0").coupled_options(CoupledOptions::default()) {
+            Err(Error::Config { field, .. }) => assert_eq!(field, "extra_heat_w"),
+            other => panic!("{other:?}"),
+        }
+        assert!(SystemConfig::from_toml("[model]\nextra_heat = 1.0\n").is_err());
     }
 }

@@ -106,6 +106,8 @@ class Bearing:
         effects: Optional[Sequence[str]] = None,
         raceway_control: str = "outer",
         misalignment_rad: Optional[float] = 0.0,
+        extra_heat_w: float = 0.0,
+        housing_conductance_scale: float = 1.0,
     ) -> dict: ...
     def ring_forces(
         self,
@@ -126,6 +128,8 @@ def stiffness_curve(
     effects: Optional[Sequence[str]] = None,
     raceway_control: str = "outer",
     misalignment_rad: Optional[float] = 0.0,
+    extra_heat_w: float = 0.0,
+    housing_conductance_scale: float = 1.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
 
@@ -363,6 +367,8 @@ def thermal_state(
     housing_material: Optional[Material] = None,
     raceway_control: str = "outer",
     misalignment_rad: Optional[float] = 0.0,
+    extra_heat_w: float = 0.0,
+    housing_conductance_scale: float = 1.0,
 ) -> dict[str, Any]: ...
 def thermal_stiffness_curve(
     bearing: Bearing,
@@ -378,6 +384,8 @@ def thermal_stiffness_curve(
     housing_material: Optional[Material] = None,
     raceway_control: str = "outer",
     misalignment_rad: Optional[float] = 0.0,
+    extra_heat_w: float = 0.0,
+    housing_conductance_scale: float = 1.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
 def seed_a_network_links(

@@ -80,7 +80,14 @@ _NODE_NAMES = {
 # Bounds: f0 0.5-6 spans Palmgren's f0 for oil-air / oil-mist (1-2) up to
 # oil bath and jet (4-6) (Harris & Kotzalas, Rolling Bearing Analysis,
 # table of f0); spin friction coefficient 0-0.3 (boundary to dry contact);
-# oil-air and ambient temperatures +-10/+20 K (cooling-air supply drift).
+# oil-air and ambient temperatures +-10/+20 K (cooling-air supply drift);
+# extra bearing heat 0-100 W (up to about the whole friction heat of a
+# 40-45 mm angular-contact bearing at 18000 rpm, the seed B magnetic-pull
+# friction being a fraction of it); housing-to-ambient conductance scale
+# 0.1-10 (a decade either way of natural convection from the bare cylinder:
+# an enclosed, insulated housing below, a finned or ventilated one or one
+# conducting into the machine frame above; natural and slow forced air
+# convection coefficients differ by about a decade, 5-10 vs 25-100 W/m^2K).
 _PARAMETERS = (
     (
         "lubrication_factor_f0",
@@ -118,6 +125,24 @@ _PARAMETERS = (
         True,
         "ambient temperature differs from the assumed one",
     ),
+    (
+        "extra_heat_w",
+        "extra_heat_w",
+        "W",
+        0.0,
+        100.0,
+        False,
+        "extra heat at the bearing (e.g. magnetic-pull friction), split like rolling heat",
+    ),
+    (
+        "housing_conductance_scale",
+        "housing_conductance_scale",
+        "1",
+        0.1,
+        10.0,
+        False,
+        "housing-to-ambient conductance differs from the bare natural-convection cylinder",
+    ),
 )
 
 _HOUSING_MATERIALS = ("aluminium", "cast-iron", "shaft-steel")
@@ -129,6 +154,8 @@ _THERMAL_DEFAULTS = {
     "ambient_temperature_c": 26.0,
     "housing_material": "aluminium",
     "raceway_control": "outer",
+    "extra_heat_w": 0.0,
+    "housing_conductance_scale": 1.0,
 }
 
 
@@ -232,7 +259,8 @@ class BearingModelSpec:
     ``effects`` (names; None = all) and the keyword options of
     :func:`thermobear.thermal_state` (``lubricant``,
     ``lubrication_factor_f0``, ``spin_friction``, ``oil_air_temperature_c``,
-    ``ambient_temperature_c``, ``housing_material``, ``raceway_control``).
+    ``ambient_temperature_c``, ``housing_material``, ``raceway_control``,
+    ``extra_heat_w``, ``housing_conductance_scale``).
     Evaluates every quantity of :data:`QUANTITIES` at given conditions; each
     configuration is solved once per set of conditions (cached)."""
 
@@ -610,6 +638,11 @@ def _curve(model, st, c, cond, quantity, base_options) -> Optional[_Curve]:
 
     if c.kind == "switch":
         vals = np.array([0.0, 1.0])
+    elif c.lower > 0.0 and c.upper >= 20.0 * c.lower:
+        # A positive scale over decades: the response goes like 1/scale
+        # (a conductance), so a geometric grid keeps the interpolant accurate
+        # at the low end.
+        vals = np.unique(np.concatenate([np.geomspace(c.lower, c.upper, _GRID), [c.null]]))
     else:
         vals = np.unique(np.concatenate([np.linspace(c.lower, c.upper, _GRID), [c.null]]))
     good, preds = [], []
@@ -1170,8 +1203,9 @@ def diagnose(
 
 def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, dict]:
     """The baseline :class:`BearingModelSpec` of a system description
-    ([bearing], [model] effects and raceway_control; the thermal options take
-    their :func:`thermobear.thermal_state` defaults) and its [operating]
+    ([bearing], [model] effects, raceway_control, extra_heat_w and
+    housing_conductance_scale; the other thermal options take their
+    :func:`thermobear.thermal_state` defaults) and its [operating]
     table (loads for measurements that give none)."""
     from .bearing import Bearing
     from .config import load_config
@@ -1183,6 +1217,9 @@ def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, d
     opts = {}
     if "raceway_control" in mdl:
         opts["raceway_control"] = mdl["raceway_control"]
+    for key in ("extra_heat_w", "housing_conductance_scale"):
+        if key in mdl:
+            opts[key] = float(mdl[key])
     spec = BearingModelSpec(Bearing.from_toml(text), effects=mdl.get("effects"), **opts)
     return spec, cfg.get("operating", {})
 

@@ -62,7 +62,7 @@ class ThermalState:
     @property
     def heat(self) -> "polars.DataFrame":  # noqa: F821
         """Heat by mechanism: ``source`` (load, viscous, inner_spin,
-        outer_spin), ``heat_w``."""
+        outer_spin, extra), ``heat_w``."""
         import polars as pl
 
         return pl.DataFrame(
@@ -140,6 +140,8 @@ def _model_kwargs(
     housing_material: Any,
     raceway_control: str,
     misalignment_rad: Optional[float],
+    extra_heat_w: float = 0.0,
+    housing_conductance_scale: float = 1.0,
 ) -> dict:
     return {
         "lubricant": str(lubricant),
@@ -150,6 +152,8 @@ def _model_kwargs(
         "housing_material": _native_material(housing_material),
         "raceway_control": str(raceway_control),
         "misalignment_rad": None if misalignment_rad is None else float(misalignment_rad),
+        "extra_heat_w": float(extra_heat_w),
+        "housing_conductance_scale": float(housing_conductance_scale),
     }
 
 
@@ -168,6 +172,8 @@ def thermal_state(
     housing_material: Any = "aluminium",
     raceway_control: str = "outer",
     misalignment_rad: Optional[float] = 0.0,
+    extra_heat_w: float = 0.0,
+    housing_conductance_scale: float = 1.0,
     **kwargs: Any,
 ) -> Any:
     """Coupled thermal steady state at ``speed_rpm`` under ``axial_n``
@@ -177,7 +183,12 @@ def thermal_state(
     ``oil_air_temperature_c``, ambient ``ambient_temperature_c``, housing
     of ``housing_material``, ``lubricant`` preset: "ISO VG 32", "ISO VG 68",
     "e-drive ATF"), Palmgren friction with ``lubrication_factor_f0`` and
-    spin friction coefficient ``spin_friction``. Returns a
+    spin friction coefficient ``spin_friction``. Calibration inputs:
+    ``extra_heat_w`` (W, >= 0; heat at the bearing beyond the modelled
+    friction, e.g. from a magnetic pull load, split like rolling heat
+    1/4 : 1/2 : 1/4 to inner ring, balls, outer ring) and
+    ``housing_conductance_scale`` (> 0, default 1; scales the housing-to-
+    ambient convection link). The defaults reproduce the baseline. Returns a
     :class:`ThermalState`. Raises ``ThermalRunawayError`` when a node passes
     the lubricant's highest temperature or heat, temperatures and contact
     loads grow together, ``ConvergenceError`` when the fixed point stalls.
@@ -215,6 +226,8 @@ def thermal_state(
             housing_material,
             raceway_control,
             misalignment_rad,
+            extra_heat_w,
+            housing_conductance_scale,
         ),
     )
     return ThermalState(raw)
@@ -235,13 +248,15 @@ def thermal_stiffness_curve(
     housing_material: Any = "aluminium",
     raceway_control: str = "outer",
     misalignment_rad: Optional[float] = 0.0,
+    extra_heat_w: float = 0.0,
+    housing_conductance_scale: float = 1.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> "polars.DataFrame":  # noqa: F821
     """The coupled state at every speed (parallel, deterministic): the
     stiffness columns of :func:`thermobear.stiffness_curve` plus
     ``shaft/inner_ring/ball/outer_ring/housing_temperature_c``, ``heat_w``
     (and ``load_/viscous_/spin_heat_w``), ``radial_thermal_offset_um``,
-    ``axial_thermal_offset_um``, ``ball_growth_um``,
+    ``axial_thermal_offset_um``, ``ball_growth_um``, ``extra_heat_w``,
     ``centrifugal_expansion_um``, ``thermal_iterations``."""
     import polars as pl
 
@@ -266,6 +281,8 @@ def thermal_stiffness_curve(
             housing_material,
             raceway_control,
             misalignment_rad,
+            extra_heat_w,
+            housing_conductance_scale,
         ),
     )
     df = pl.DataFrame({k: np.asarray(v) for k, v in cols.items()})

@@ -224,29 +224,11 @@ fn static_start(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64)) -> [f64; 2]
     }
 }
 
-fn solve_ball(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), prev: &mut BallSolution) -> Result<Condensed> {
-    if !ctx.centrifugal && p.0.hypot(p.1) <= m.a0 {
-        // Free ball: no centrifugal force and an open gap.
-        *prev = BallSolution {
-            x: static_start(m, ctx, p),
-            p,
-            dxdp: [[0.0; 2]; 2],
-            valid: false,
-        };
-        return Ok(Condensed {
-            f: [0.0; 3],
-            dfdp: [[0.0; 2]; 3],
-        });
-    }
-    let mut x = if prev.valid {
-        let (d1, d2) = (p.0 - prev.p.0, p.1 - prev.p.1);
-        [
-            prev.x[0] + prev.dxdp[0][0] * d1 + prev.dxdp[0][1] * d2,
-            prev.x[1] + prev.dxdp[1][0] * d1 + prev.dxdp[1][1] * d2,
-        ]
-    } else {
-        static_start(m, ctx, p)
-    };
+/// Damped Newton iteration of one ball's equilibrium from `x0`
+/// (step capped at half the ball-to-groove-centre distance, backtracking
+/// until the residual falls).
+fn ball_newton(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), x0: [f64; 2]) -> Result<([f64; 2], BallTerms)> {
+    let mut x = x0;
     let norm = |t: &BallTerms| t.r_ax.v.abs().max(t.r_rad.v.abs());
     let mut t = ball_terms(m, ctx, x, p);
     let mut converged = false;
@@ -302,15 +284,50 @@ fn solve_ball(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), prev: &mut Ba
             }
         }
     }
-    let rn = norm(&t);
     if !converged {
         return Err(Error::convergence(
             "ball equilibrium (A-15)",
             it,
-            rn,
+            norm(&t),
             1e-11 * (t.qi + t.qo + t.fc),
         ));
     }
+    Ok((x, t))
+}
+
+fn solve_ball(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), prev: &mut BallSolution) -> Result<Condensed> {
+    if !ctx.centrifugal && p.0.hypot(p.1) <= m.a0 {
+        // Free ball: no centrifugal force and an open gap.
+        *prev = BallSolution {
+            x: static_start(m, ctx, p),
+            p,
+            dxdp: [[0.0; 2]; 2],
+            valid: false,
+        };
+        return Ok(Condensed {
+            f: [0.0; 3],
+            dfdp: [[0.0; 2]; 3],
+        });
+    }
+    let (x, t) = if prev.valid {
+        let (d1, d2) = (p.0 - prev.p.0, p.1 - prev.p.1);
+        let predicted = [
+            prev.x[0] + prev.dxdp[0][0] * d1 + prev.dxdp[0][1] * d2,
+            prev.x[1] + prev.dxdp[1][0] * d1 + prev.dxdp[1][1] * d2,
+        ];
+        // The predictor is a tangent of the previous contact state. When
+        // the groove centres moved across the point where the inner contact
+        // opens (|p| = A0), the Newton iteration from it can stall on the
+        // inner contact's edge (dli = 0, where dQ/d(delta) = 0) with the
+        // outer contact open: only Fc is left, with no direction that lowers
+        // the residual. Restart from the cold (static) position then.
+        match ball_newton(m, ctx, p, predicted) {
+            Ok(sol) => sol,
+            Err(_) => ball_newton(m, ctx, p, static_start(m, ctx, p))?,
+        }
+    } else {
+        ball_newton(m, ctx, p, static_start(m, ctx, p))?
+    };
     // Implicit-function condensation.
     let jx = [[t.r_ax.d[0], t.r_ax.d[1]], [t.r_rad.d[0], t.r_rad.d[1]]];
     let jp = [[t.r_ax.d[2], t.r_ax.d[3]], [t.r_rad.d[2], t.r_rad.d[3]]];
@@ -677,5 +694,39 @@ mod tests {
             let couple_rev = cross(arm, fric_rev);
             assert!((couple_rev[1] + dhdt[1]).abs() < 1e-9 * dhdt[1]);
         }
+    }
+
+    /// A ball whose groove centres move from a loaded position to one with
+    /// the inner gap open (|p| < A0) must reach the same equilibrium from the
+    /// warm start (predictor of the loaded state) as from the cold start.
+    #[test]
+    fn warm_start_across_inner_contact_opening_matches_cold_start() {
+        let m = BearingModel::new(&Bearing::preset("7009C-hybrid").unwrap()).unwrap();
+        let o = SolveOptions::default();
+        let ctx = SpeedContext::new(&m, 8_000.0, &o).unwrap();
+        let open: (f64, f64) = (1.381434e-4, 4.133031e-4);
+        assert!(open.0.hypot(open.1) < m.a0);
+        let mut checked = 0;
+        for k in 1..=40 {
+            let s = 1.0 + 0.0005 * k as f64;
+            let loaded = (open.0 * s, open.1 * s);
+            let mut warm = BallSolution::default();
+            solve_ball(&m, &ctx, loaded, &mut warm).unwrap();
+            assert!(warm.valid);
+            let w = solve_ball(&m, &ctx, open, &mut warm).unwrap();
+            let xw = warm.x;
+            let mut cold = BallSolution::default();
+            let c = solve_ball(&m, &ctx, open, &mut cold).unwrap();
+            for i in 0..2 {
+                assert!(
+                    (xw[i] - cold.x[i]).abs() < 1e-9 * m.ro_off,
+                    "{k}: {xw:?} vs {:?}",
+                    cold.x
+                );
+                assert!((w.f[i] - c.f[i]).abs() <= 1e-6 * c.f[i].abs().max(1e-3));
+            }
+            checked += 1;
+        }
+        assert_eq!(checked, 40);
     }
 }

@@ -27,6 +27,8 @@ struct Settings {
     housing_material: Option<PyMaterial>,
     raceway_control: String,
     misalignment_rad: Option<f64>,
+    extra_heat_w: f64,
+    housing_conductance_scale: f64,
 }
 
 impl Settings {
@@ -45,6 +47,8 @@ impl Settings {
             solve,
             lubrication_factor_f0: self.lubrication_factor_f0,
             spin_friction: self.spin_friction,
+            extra_heat_w: self.extra_heat_w,
+            housing_conductance_scale: self.housing_conductance_scale,
             ..CoupledOptions::default()
         };
         CoupledBearing::new(bearing, p, mounting, options)
@@ -56,10 +60,17 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
     d.set_item("node", s.node_names.clone())?;
     d.set_item("temperature_c", s.temperatures_c.clone().into_pyarray(py))?;
     let h = &s.heat;
-    d.set_item("source", vec!["load", "viscous", "inner_spin", "outer_spin"])?;
+    d.set_item("source", vec!["load", "viscous", "inner_spin", "outer_spin", "extra"])?;
     d.set_item(
         "heat_w",
-        vec![h.load_w, h.viscous_w, h.heat.inner_spin_w, h.heat.outer_spin_w].into_pyarray(py),
+        vec![
+            h.load_w,
+            h.viscous_w,
+            h.heat.inner_spin_w,
+            h.heat.outer_spin_w,
+            h.extra_w,
+        ]
+        .into_pyarray(py),
     )?;
     d.set_item("part", vec!["inner_ring", "balls", "outer_ring"])?;
     d.set_item(
@@ -113,7 +124,7 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
 
 /// Coupled thermal steady state of one bearing in the seed A network.
 #[pyfunction]
-#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0)))]
+#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0))]
 #[allow(clippy::too_many_arguments)]
 pub fn thermal_state<'py>(
     py: Python<'py>,
@@ -130,6 +141,8 @@ pub fn thermal_state<'py>(
     housing_material: Option<PyMaterial>,
     raceway_control: String,
     misalignment_rad: Option<f64>,
+    extra_heat_w: f64,
+    housing_conductance_scale: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let settings = Settings {
         effects,
@@ -141,6 +154,8 @@ pub fn thermal_state<'py>(
         housing_material,
         raceway_control,
         misalignment_rad,
+        extra_heat_w,
+        housing_conductance_scale,
     };
     let b = &bearing.inner;
     let (c, s) = py
@@ -155,7 +170,7 @@ pub fn thermal_state<'py>(
 
 /// Thermal stiffness curve: the coupled state at every speed, in parallel.
 #[pyfunction]
-#[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), progress=None))]
+#[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, progress=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn thermal_stiffness_curve<'py>(
     py: Python<'py>,
@@ -172,6 +187,8 @@ pub fn thermal_stiffness_curve<'py>(
     housing_material: Option<PyMaterial>,
     raceway_control: String,
     misalignment_rad: Option<f64>,
+    extra_heat_w: f64,
+    housing_conductance_scale: f64,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let speeds = speeds_rpm.as_slice()?.to_vec();
@@ -185,6 +202,8 @@ pub fn thermal_stiffness_curve<'py>(
         housing_material,
         raceway_control,
         misalignment_rad,
+        extra_heat_w,
+        housing_conductance_scale,
     };
     let c = settings.build(&bearing.inner).py_err()?;
     let results = chunked_map(py, &speeds, default_chunk(speeds.len()), progress.as_ref(), |&n| {
@@ -211,6 +230,7 @@ pub fn thermal_stiffness_curve<'py>(
     d.set_item("heat_w", col(&|s| s.heat.heat.total_w()).into_pyarray(py))?;
     d.set_item("load_heat_w", col(&|s| s.heat.load_w).into_pyarray(py))?;
     d.set_item("viscous_heat_w", col(&|s| s.heat.viscous_w).into_pyarray(py))?;
+    d.set_item("extra_heat_w", col(&|s| s.heat.extra_w).into_pyarray(py))?;
     d.set_item(
         "spin_heat_w",
         col(&|s| s.heat.heat.inner_spin_w + s.heat.heat.outer_spin_w).into_pyarray(py),

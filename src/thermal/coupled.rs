@@ -77,6 +77,16 @@ pub struct CoupledOptions {
     /// Assembly (reference) temperature of the clearance and fits [C];
     /// `None`: the ambient temperature of the network.
     pub reference_temperature_c: Option<f64>,
+    /// Extra heat at the bearing [W] beyond the modelled friction (e.g. the
+    /// friction of a magnetic pull load the model does not apply, seed B),
+    /// split like rolling friction heat (Burton-Staph, A-27: 1/4 inner ring,
+    /// 1/2 balls, 1/4 outer ring). Calibration input; default 0.
+    pub extra_heat_w: f64,
+    /// Scale on the housing-to-ambient convection conductance (link R_h-a,
+    /// natural convection h = C dT^0.25 scaled through C): a housing that
+    /// sheds heat better (fins, air flow, conduction into the machine) or
+    /// worse than the bare cylinder assumed. Calibration input; default 1.
+    pub housing_conductance_scale: f64,
     /// Largest node temperature change at convergence [K].
     pub tolerance_k: f64,
     /// Largest change of the raceway offsets at convergence [m].
@@ -91,6 +101,8 @@ impl Default for CoupledOptions {
             lubrication_factor_f0: 1.0,
             spin_friction: 0.06,
             reference_temperature_c: None,
+            extra_heat_w: 0.0,
+            housing_conductance_scale: 1.0,
             tolerance_k: 1e-6,
             tolerance_m: 1e-12,
             max_iterations: 200,
@@ -99,12 +111,19 @@ impl Default for CoupledOptions {
 }
 
 impl CoupledOptions {
-    fn validate(&self) -> Result<()> {
+    /// Check every field (bad values name their field).
+    pub fn validate(&self) -> Result<()> {
         positive("lubrication_factor_f0", self.lubrication_factor_f0)?;
         non_negative("spin_friction", self.spin_friction)?;
         if let Some(t) = self.reference_temperature_c {
             in_range("reference_temperature_c", t, -60.0, 200.0)?;
         }
+        // Bounds: up to 10 kW at one bearing (far above any bearing loss:
+        // seed A's highest is ~1 kW); conductance scale 0.01..100 (two
+        // decades either way of the bare natural-convection cylinder).
+        in_range("extra_heat_w", self.extra_heat_w, 0.0, 1e4)?;
+        positive("housing_conductance_scale", self.housing_conductance_scale)?;
+        in_range("housing_conductance_scale", self.housing_conductance_scale, 0.01, 100.0)?;
         positive("tolerance_k", self.tolerance_k)?;
         positive("tolerance_m", self.tolerance_m)?;
         if self.max_iterations == 0 {
@@ -143,7 +162,10 @@ pub struct HeatReport {
     /// Oil temperature and kinematic viscosity used in Mv [C], [cSt].
     pub oil_temperature_c: f64,
     pub viscosity_cst: f64,
-    /// All mechanisms (rolling = load + viscous, inner and outer spin) [W].
+    /// Extra heat of [`CoupledOptions::extra_heat_w`] [W].
+    pub extra_w: f64,
+    /// All mechanisms (rolling = load + viscous + extra, inner and outer
+    /// spin) [W].
     pub heat: BearingHeat,
     /// Burton-Staph split (A-27) [W].
     pub split: HeatSplit,
@@ -224,12 +246,15 @@ pub fn operating_heat(
     } else {
         (Vec::new(), Vec::new())
     };
-    let heat = bearing_heat(omega, m1, mv, options.spin_friction, &ci, &co)?;
+    let mut heat = bearing_heat(omega, m1, mv, options.spin_friction, &ci, &co)?;
+    // The extra heat is split like rolling friction heat.
+    heat.rolling_w += options.extra_heat_w;
     Ok(HeatReport {
         load_moment_n_m: m1,
         viscous_moment_n_m: mv,
         load_w: omega * m1,
         viscous_w: omega * mv,
+        extra_w: options.extra_heat_w,
         oil_temperature_c: oil_c,
         viscosity_cst: nu,
         heat,
@@ -314,7 +339,13 @@ impl CoupledBearing {
         options.validate()?;
         mounting.validate(bearing)?;
         params.lubricant.check_temperature(params.oil_air_temperature_c)?;
-        let network = seed_a_network(bearing, &params)?;
+        // The housing link's conductance is linear in C (h = C dT^0.25), so
+        // scaling C scales the link exactly.
+        let scaled = SeedAParams {
+            natural_coefficient_w_m2_k125: params.natural_coefficient_w_m2_k125 * options.housing_conductance_scale,
+            ..params.clone()
+        };
+        let network = seed_a_network(bearing, &scaled)?;
         Ok(CoupledBearing {
             model: BearingModel::new(bearing)?,
             network,
@@ -767,5 +798,118 @@ mod tests {
             assert_eq!(x.0.stiffness_matrix_si, y.0.stiffness_matrix_si);
         }
         assert!(StiffnessMode::from_name("hot").is_err());
+    }
+
+    #[test]
+    fn extra_heat_is_split_like_rolling_heat_and_leaves_through_the_boundaries() {
+        let base = seed_a(EffectSet::all()).solve(10_000.0, FA, FR).unwrap();
+        let b = Bearing::preset("6208").unwrap();
+        let e = 40.0;
+        let o = CoupledOptions {
+            extra_heat_w: e,
+            ..CoupledOptions::default()
+        };
+        let s = CoupledBearing::seed_a(&b, o).unwrap().solve(10_000.0, FA, FR).unwrap();
+        assert_eq!(s.heat.extra_w, e);
+        // Heat balance with the extra source (A-23 + E).
+        let h = s.heat.heat.total_w();
+        let out: f64 = s.boundary_flows_w.iter().map(|(_, q)| q).sum();
+        assert!((out - h).abs() < 1e-6 * h, "{out} vs {h}");
+        // Burton-Staph: friction split + E/4, E/2, E/4.
+        let own = bearing_heat(
+            rpm_to_rad_s(10_000.0),
+            s.heat.load_moment_n_m,
+            s.heat.viscous_moment_n_m,
+            0.06,
+            &[],
+            &[],
+        )
+        .unwrap();
+        let spin = BearingHeat {
+            rolling_w: 0.0,
+            ..s.heat.heat
+        };
+        let fr = BearingHeat {
+            rolling_w: own.rolling_w,
+            ..spin
+        }
+        .split();
+        assert!((s.heat.split.inner_ring_w - fr.inner_ring_w - 0.25 * e).abs() < 1e-9 * h);
+        assert!((s.heat.split.balls_w - fr.balls_w - 0.5 * e).abs() < 1e-9 * h);
+        assert!((s.heat.split.outer_ring_w - fr.outer_ring_w - 0.25 * e).abs() < 1e-9 * h);
+        // More heat, hotter bearing.
+        for n in ["Ti", "Tb", "To", "Th"] {
+            assert!(s.temperature_c(n).unwrap() > base.temperature_c(n).unwrap(), "{n}");
+        }
+    }
+
+    #[test]
+    fn housing_conductance_scale_scales_the_natural_convection_link() {
+        let b = Bearing::preset("6208").unwrap();
+        let p = SeedAParams::for_bearing(&b);
+        let solve = |k: f64| {
+            let o = CoupledOptions {
+                housing_conductance_scale: k,
+                ..CoupledOptions::default()
+            };
+            CoupledBearing::seed_a(&b, o).unwrap().solve(10_000.0, FA, FR).unwrap()
+        };
+        let (one, two) = (solve(1.0), solve(2.0));
+        // Flow to ambient = k C A (Th - Ta)^1.25 (natural convection over the
+        // housing cylinder and both end faces, module docs of presets).
+        let od = b.geometry.outer_diameter_m;
+        let dh = p.housing_diameter_m;
+        let area = std::f64::consts::PI * (dh * p.housing_length_m + 0.5 * (dh * dh - od * od));
+        for (k, s) in [(1.0, &one), (2.0, &two)] {
+            let dt = s.temperature_c("Th").unwrap() - p.ambient_temperature_c;
+            let q = s.boundary_flows_w.iter().find(|(n, _)| n == "Ta").unwrap().1;
+            let expect = k * p.natural_coefficient_w_m2_k125 * area * dt.powf(1.25);
+            assert!((q - expect).abs() < 1e-6 * expect, "k {k}: {q} vs {expect}");
+        }
+        // A better-cooled housing runs cooler.
+        assert!(two.temperature_c("Th").unwrap() < one.temperature_c("Th").unwrap());
+        // Default options are the unscaled model, bit for bit.
+        let d = seed_a(EffectSet::all()).solve(10_000.0, FA, FR).unwrap();
+        assert_eq!(d.temperatures_c, one.temperatures_c);
+    }
+
+    #[test]
+    fn new_calibration_inputs_are_validated() {
+        let b = Bearing::preset("6208").unwrap();
+        for (o, field) in [
+            (
+                CoupledOptions {
+                    extra_heat_w: -1.0,
+                    ..CoupledOptions::default()
+                },
+                "extra_heat_w",
+            ),
+            (
+                CoupledOptions {
+                    extra_heat_w: f64::NAN,
+                    ..CoupledOptions::default()
+                },
+                "extra_heat_w",
+            ),
+            (
+                CoupledOptions {
+                    housing_conductance_scale: 0.0,
+                    ..CoupledOptions::default()
+                },
+                "housing_conductance_scale",
+            ),
+            (
+                CoupledOptions {
+                    housing_conductance_scale: 1e3,
+                    ..CoupledOptions::default()
+                },
+                "housing_conductance_scale",
+            ),
+        ] {
+            match CoupledBearing::seed_a(&b, o) {
+                Err(Error::Config { field: f, .. }) => assert_eq!(f, field),
+                other => panic!("{field}: expected a config error, got {other:?}"),
+            }
+        }
     }
 }
