@@ -193,3 +193,15 @@ def test_without_axial_growth_thermal_displacement_is_only_a_look_alike(base):
         (pl.col("a") == "thermal_displacement") & (pl.col("b") == "thermal_expansion_shaft")
     )
     assert la["suggest_quantity"][0] == "axial_growth_um"
+
+
+def test_diagnose_accepts_a_spindle_model_directly():
+    """tb.diagnose with a SpindleModelSpec runs under the spindle registry and
+    gives the same result as tb.diagnose_spindle."""
+    model = tb.SpindleModelSpec(
+        tb.Spindle.preset("seed-ceramic-spindle"), effects=["centrifugal_force"]
+    )
+    data = tb.seed_b_measurements()
+    a = tb.diagnose(model, data, holdout=None)
+    b = tb.diagnose_spindle(model, data, holdout=None)
+    assert a.verdict == b.verdict

@@ -601,6 +601,8 @@ def _cosine(a: np.ndarray, b: np.ndarray) -> float:
 
 
 _GRID = 13  # parameter values evaluated per candidate (cubic interpolant between)
+#: Set while a spec's own registry (quantities, candidates) is swapped in.
+_REGISTRY_ACTIVE = [False]
 _DENSE = 601
 _CHI2_95 = 3.841  # chi^2(1) 95 % quantile: profile interval
 
@@ -633,6 +635,15 @@ class _Curve:
         return self._spline()(self.cand.null, 1)
 
 
+def _grid_with_null(grid: np.ndarray, null: float) -> np.ndarray:
+    """The grid with the null value put on it: a grid point within a tiny
+    fraction of the span of the null is replaced by it (two abscissae that
+    differ only by rounding would break the interpolant)."""
+    tol = 1e-6 * (grid[-1] - grid[0])
+    keep = grid[np.abs(grid - null) > tol]
+    return np.unique(np.concatenate([keep, [null]]))
+
+
 def _curve(model, st, c, cond, quantity, base_options) -> Optional[_Curve]:
     from .errors import ThermobearError
 
@@ -642,9 +653,9 @@ def _curve(model, st, c, cond, quantity, base_options) -> Optional[_Curve]:
         # A positive scale over decades: the response goes like 1/scale
         # (a conductance), so a geometric grid keeps the interpolant accurate
         # at the low end.
-        vals = np.unique(np.concatenate([np.geomspace(c.lower, c.upper, _GRID), [c.null]]))
+        vals = _grid_with_null(np.geomspace(c.lower, c.upper, _GRID), c.null)
     else:
-        vals = np.unique(np.concatenate([np.linspace(c.lower, c.upper, _GRID), [c.null]]))
+        vals = _grid_with_null(np.linspace(c.lower, c.upper, _GRID), c.null)
     good, preds = [], []
     for v in vals:
         try:
@@ -994,6 +1005,22 @@ def diagnose(
 
     if not isinstance(model, BearingModelSpec):
         raise ConfigError(f"invalid model = {model!r}: give a thermobear.BearingModelSpec")
+    registry = getattr(model, "_registry", None)
+    if registry is not None and not _REGISTRY_ACTIVE[0]:
+        # A spec with its own quantities and candidates (the spindle) runs
+        # the same machinery under them.
+        with registry():
+            return diagnose(
+                model,
+                measured,
+                candidates,
+                holdout,
+                max_rounds=max_rounds,
+                delta_bic_min=delta_bic_min,
+                tie_delta_bic=tie_delta_bic,
+                lookalike_cosine=lookalike_cosine,
+                suggest=suggest,
+            )
     df = load_measurements(measured)
     quantity = df["quantity"].to_numpy()
     y, s = df["value"].to_numpy(), df["sigma"].to_numpy()

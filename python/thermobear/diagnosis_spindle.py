@@ -100,6 +100,12 @@ class SpindleModelSpec(BearingModelSpec):
     Each configuration, preload and speed is solved once (cached, shared by
     the copies of :meth:`with_setting`)."""
 
+    @staticmethod
+    def _registry() -> Any:
+        """The spindle's quantities and candidates, for
+        :func:`thermobear.diagnose`."""
+        return _spindle_registry()
+
     def __init__(self, spindle: Any, effects: Optional[Sequence[str]] = None, **options: Any):
         from . import _native
 
@@ -446,12 +452,15 @@ def _spindle_registry() -> Iterator[None]:
     at call time); restored on exit, one diagnosis at a time."""
     with _LOCK:
         saved = (_dg.QUANTITIES, _dg._candidate_list)
+        active = _dg._REGISTRY_ACTIVE[0]
         _dg.QUANTITIES = SPINDLE_QUANTITIES
         _dg._candidate_list = _spindle_candidate_list
+        _dg._REGISTRY_ACTIVE[0] = True
         try:
             yield
         finally:
             _dg.QUANTITIES, _dg._candidate_list = saved
+            _dg._REGISTRY_ACTIVE[0] = active
 
 
 def spindle_candidates(
