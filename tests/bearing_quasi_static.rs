@@ -325,3 +325,23 @@ fn load_and_speed_grid_converges_to_equilibrium() {
         }
     }
 }
+
+/// Found by hypothesis: at a vanishing speed and a light load most balls are
+/// out of contact and the quasi-static model is ill-posed. The solver must
+/// say so instead of returning a NaN stiffness.
+#[test]
+fn vanishing_speed_with_free_balls_is_an_error_not_nan() {
+    let b = thermobear::Bearing::preset("6208").unwrap();
+    let m = thermobear::bearing::BearingModel::new(&b).unwrap();
+    let opts = thermobear::bearing::SolveOptions {
+        tilt: thermobear::bearing::state::Tilt::held_level(),
+        ..Default::default()
+    };
+    match m.solve(&[6.0, 0.0, 0.25, 0.0, 0.0], 1e-12, &opts) {
+        Ok(s) => {
+            assert!(s.stiffness_matrix_si.iter().flatten().all(|v| v.is_finite()));
+            assert!(s.balls.iter().all(|x| x.orbit_speed_rad_s.is_finite()));
+        }
+        Err(e) => assert!(matches!(e, thermobear::Error::Convergence { .. }), "{e}"),
+    }
+}

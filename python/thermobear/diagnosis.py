@@ -432,8 +432,17 @@ def _candidate_list(
                     option="housing_material",
                 )
             )
+    out += sensor_offset_candidates(quantities, QUANTITIES)
+    return out
+
+
+def sensor_offset_candidates(quantities: Sequence[str], table: dict) -> list:
+    """The measurement-side decoys: a constant offset per measured quantity
+    (+-10 typical sigma, or +-20 % for relative quantities); ``table`` maps a
+    quantity to its registry row (typical sigma at [3], relative flag at [4])."""
+    out = []
     for q in quantities:
-        typ, rel = QUANTITIES[q][3], QUANTITIES[q][4]
+        typ, rel = table[q][3], table[q][4]
         unit = "K" if q.startswith("temperature_c") else q.rsplit("_", 1)[-1]
         bound = 10.0 * typ if not rel else 0.2
         out.append(

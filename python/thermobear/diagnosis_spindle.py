@@ -407,26 +407,7 @@ def _spindle_candidate_list(model: Optional[SpindleModelSpec], quantities: Seque
             option="unbalance_grade",
         )
     )
-    for q in quantities:
-        typ, rel = SPINDLE_QUANTITIES[q][3], SPINDLE_QUANTITIES[q][4]
-        unit = "K" if q.startswith("temperature_c") else q.rsplit("_", 1)[-1]
-        bound = 10.0 * typ if not rel else 0.2
-        out.append(
-            Candidate(
-                f"sensor_offset:{q}",
-                "parameter",
-                "measurement",
-                "offset" if not rel else "relative_offset",
-                "1" if rel else unit,
-                -bound,
-                bound,
-                0.0,
-                f"decoy: constant sensor offset on {q}",
-                (q,),
-                offset=True,
-                quantity=q,
-            )
-        )
+    out += _dg.sensor_offset_candidates(quantities, SPINDLE_QUANTITIES)
     return out
 
 

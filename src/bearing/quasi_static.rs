@@ -522,7 +522,7 @@ impl BearingModel {
         let k = sol.k;
         let balls = qs_balls(self, &ctx, &sol.q, opts, warm);
         let (ka, kr) = seed_stiffness(self, &balls);
-        Ok(BearingState {
+        BearingState {
             displacement_m_rad: sol.q,
             applied_load_n_nm: sol.load,
             balls,
@@ -532,7 +532,8 @@ impl BearingModel {
             iterations: sol.iterations,
             residual: sol.residual,
             speed_rpm,
-        })
+        }
+        .checked("quasi-static bearing equilibrium")
     }
 }
 

@@ -198,6 +198,50 @@ pub struct BearingState {
 }
 
 impl BearingState {
+    /// The state if every number in it is finite, else a convergence error
+    /// naming `solver` (never a silent NaN; e.g. the quasi-static model is
+    /// ill-posed for balls out of contact at a vanishing speed).
+    pub fn checked(self, solver: &str) -> crate::error::Result<Self> {
+        let ball_ok = |b: &BallState| {
+            [
+                b.inner_load_n,
+                b.outer_load_n,
+                b.inner_contact_angle_rad,
+                b.outer_contact_angle_rad,
+                b.inner_deflection_m,
+                b.outer_deflection_m,
+                b.centrifugal_force_n,
+                b.gyroscopic_moment_n_m,
+                b.orbit_speed_rad_s,
+                b.spin_speed_rad_s,
+                b.attitude_angle_rad,
+                b.inner_spin_rad_s,
+                b.outer_spin_rad_s,
+                b.inner_spin_to_roll,
+                b.outer_spin_to_roll,
+                b.inner_semi_major_m,
+                b.outer_semi_major_m,
+            ]
+            .iter()
+            .all(|v| v.is_finite())
+        };
+        let finite = self.displacement_m_rad.iter().all(|v| v.is_finite())
+            && self.stiffness_matrix_si.iter().flatten().all(|v| v.is_finite())
+            && self.axial_stiffness_n_per_m.is_finite()
+            && self.radial_stiffness_n_per_m.is_finite()
+            && self.balls.iter().all(ball_ok);
+        if finite {
+            Ok(self)
+        } else {
+            Err(crate::error::Error::convergence(
+                format!("{solver} (non-finite state: balls out of contact make the model ill-posed here)"),
+                self.iterations,
+                f64::INFINITY,
+                0.0,
+            ))
+        }
+    }
+
     /// Largest inner contact load [N].
     pub fn max_inner_load_n(&self) -> f64 {
         self.balls.iter().map(|b| b.inner_load_n).fold(0.0, f64::max)

@@ -189,7 +189,7 @@ pub fn solve_static(model: &BearingModel, load: &[f64; 5], opts: &SolveOptions) 
     let sol = static_displacement(model, load, opts)?;
     let balls = static_balls(model, &sol.q, opts);
     let (ka, kr) = seed_stiffness(model, &balls);
-    Ok(BearingState {
+    BearingState {
         displacement_m_rad: sol.q,
         applied_load_n_nm: sol.load,
         balls,
@@ -199,7 +199,8 @@ pub fn solve_static(model: &BearingModel, load: &[f64; 5], opts: &SolveOptions) 
         iterations: sol.iterations,
         residual: sol.residual,
         speed_rpm: 0.0,
-    })
+    }
+    .checked("static bearing equilibrium")
 }
 
 /// The zero-speed ring equilibrium only (no per-ball output).

@@ -112,6 +112,24 @@ fn material_or(m: Option<PyMaterial>, default: Material) -> Material {
     m.map(|m| m.inner).unwrap_or(default)
 }
 
+/// A bearing from checked geometry and optional materials (52100 default).
+fn finish(
+    name: Option<String>,
+    default_name: &str,
+    g: BearingGeometry,
+    ring_material: Option<PyMaterial>,
+    ball_material: Option<PyMaterial>,
+) -> PyResult<PyBearing> {
+    let b = Bearing::new(
+        name.unwrap_or_else(|| default_name.into()),
+        g,
+        material_or(ring_material, Material::steel_52100()),
+        material_or(ball_material, Material::steel_52100()),
+    )
+    .py_err()?;
+    Ok(PyBearing { inner: b })
+}
+
 #[pymethods]
 impl PyBearing {
     /// A built-in bearing: 6208, 7008C, 7009C, each also -hybrid and -ceramic.
@@ -158,14 +176,7 @@ impl PyBearing {
             width_mm * mm,
         )
         .py_err()?;
-        let b = Bearing::new(
-            name.unwrap_or_else(|| "deep-groove".into()),
-            g,
-            material_or(ring_material, Material::steel_52100()),
-            material_or(ball_material, Material::steel_52100()),
-        )
-        .py_err()?;
-        Ok(PyBearing { inner: b })
+        finish(name, "deep-groove", g, ring_material, ball_material)
     }
 
     #[staticmethod]
@@ -199,14 +210,7 @@ impl PyBearing {
             width_mm * mm,
         )
         .py_err()?;
-        let b = Bearing::new(
-            name.unwrap_or_else(|| "angular-contact".into()),
-            g,
-            material_or(ring_material, Material::steel_52100()),
-            material_or(ball_material, Material::steel_52100()),
-        )
-        .py_err()?;
-        Ok(PyBearing { inner: b })
+        finish(name, "angular-contact", g, ring_material, ball_material)
     }
 
     /// The bearing of a system description (TOML text).
