@@ -338,13 +338,7 @@ pub fn dop853<const N: usize, S: OdeSystem<N>>(
 mod tests {
     use super::*;
 
-    struct Harmonic(f64);
-    impl OdeSystem<2> for Harmonic {
-        fn rhs(&self, _t: f64, x: &[f64; 2], dx: &mut [f64; 2]) {
-            dx[0] = x[1];
-            dx[1] = -self.0 * self.0 * x[0];
-        }
-    }
+    use crate::dynamics::ode::test_systems::Harmonic;
 
     #[test]
     fn tableau_is_consistent() {

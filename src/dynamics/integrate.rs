@@ -377,14 +377,7 @@ mod tests {
     use super::*;
     use crate::dynamics::ode::Gridded;
 
-    /// Harmonic oscillator x'' = -w^2 x.
-    struct Harmonic(f64);
-    impl OdeSystem<2> for Harmonic {
-        fn rhs(&self, _t: f64, x: &[f64; 2], dx: &mut [f64; 2]) {
-            dx[0] = x[1];
-            dx[1] = -self.0 * self.0 * x[0];
-        }
-    }
+    use crate::dynamics::ode::test_systems::Harmonic;
 
     #[test]
     fn rk4_is_fourth_order_on_harmonic_oscillator() {

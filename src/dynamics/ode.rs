@@ -191,3 +191,19 @@ mod tests {
         assert!(PeriodicTable::new("k_n_per_m", vec![f64::NAN]).is_err());
     }
 }
+
+/// Reference systems shared by the integrator tests.
+#[cfg(test)]
+pub(crate) mod test_systems {
+    use super::OdeSystem;
+
+    /// Harmonic oscillator x'' = -w^2 x (exact solution cos(w t)).
+    pub(crate) struct Harmonic(pub f64);
+
+    impl OdeSystem<2> for Harmonic {
+        fn rhs(&self, _t: f64, x: &[f64; 2], dx: &mut [f64; 2]) {
+            dx[0] = x[1];
+            dx[1] = -self.0 * self.0 * x[0];
+        }
+    }
+}

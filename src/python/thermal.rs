@@ -272,6 +272,24 @@ fn seed_a_params(
     Ok(p)
 }
 
+/// The seed A network of `bearing` with the Python-side settings.
+fn seed_a_net(
+    bearing: &Bearing,
+    lubricant: &str,
+    oil_air_temperature_c: f64,
+    ambient_temperature_c: f64,
+    housing_material: Option<PyMaterial>,
+) -> Result<crate::thermal::presets::BearingNetwork> {
+    let p = seed_a_params(
+        bearing,
+        lubricant,
+        oil_air_temperature_c,
+        ambient_temperature_c,
+        housing_material,
+    )?;
+    crate::thermal::presets::seed_a_network(bearing, &p)
+}
+
 /// The seed A network at `speed_rpm` as plain numbers (for independent
 /// solvers): node names, fixed temperatures (boundaries) and per link
 /// `(name, a, b, conductance_w_per_k, natural_w_per_k125)`, the flow a -> b
@@ -288,16 +306,14 @@ pub fn seed_a_network_links<'py>(
     housing_material: Option<PyMaterial>,
 ) -> PyResult<Bound<'py, PyDict>> {
     use crate::thermal::network::{Convection, LinkKind, NodeKind};
-    let b = &bearing.inner;
-    let p = seed_a_params(
-        b,
+    let net = seed_a_net(
+        &bearing.inner,
         &lubricant,
         oil_air_temperature_c,
         ambient_temperature_c,
         housing_material,
     )
     .py_err()?;
-    let net = crate::thermal::presets::seed_a_network(b, &p).py_err()?;
     let w = crate::units::rpm_to_rad_s(crate::error::non_negative("speed_rpm", speed_rpm).py_err()?);
     let d = PyDict::new(py);
     let nodes = net.network.nodes();
@@ -344,9 +360,9 @@ pub fn seed_a_steady_temperatures<'py>(
     ambient_temperature_c: f64,
     housing_material: Option<PyMaterial>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let b = &bearing.inner;
-    let p = seed_a_params(
-        b,
+    // Built once: solved below and its node names returned with the result.
+    let net = seed_a_net(
+        &bearing.inner,
         &lubricant,
         oil_air_temperature_c,
         ambient_temperature_c,
@@ -355,7 +371,6 @@ pub fn seed_a_steady_temperatures<'py>(
     .py_err()?;
     let t = py
         .detach(|| -> Result<Vec<f64>> {
-            let net = crate::thermal::presets::seed_a_network(b, &p)?;
             let split = crate::thermal::HeatSplit {
                 inner_ring_w: finite("inner_ring_w", inner_ring_w)?,
                 balls_w: finite("balls_w", balls_w)?,
@@ -367,8 +382,7 @@ pub fn seed_a_steady_temperatures<'py>(
         })
         .py_err()?;
     let d = PyDict::new(py);
-    let p2 = crate::thermal::presets::seed_a_network(b, &p).py_err()?;
-    d.set_item("node", p2.network.names().iter().cloned().collect::<Vec<_>>())?;
+    d.set_item("node", net.network.names().iter().cloned().collect::<Vec<_>>())?;
     d.set_item("temperature_c", t.into_pyarray(py))?;
     Ok(d)
 }
