@@ -10,7 +10,7 @@ import pytest
 
 import thermobear as tb
 from thermobear import diagnosis
-from thermobear.diagnosis_spindle import THERMAL_DISPLACEMENT_EFFECTS
+from thermobear.diagnosis_spindle import SPINDLE_QUANTITIES, THERMAL_DISPLACEMENT_EFFECTS
 from thermobear.errors import ConfigError, DataError
 from thermobear.studies_diagnose_seed_b import (
     baseline_without_thermal_displacement,
@@ -126,11 +126,17 @@ def test_null_case_names_nothing(base):
     assert sum(v != "no missing effect supported" for v in verdicts) <= 1
 
 
-def test_registry_is_restored_and_bad_input_rejected(spindle, base):
-    bearing_quantities = dict(diagnosis.QUANTITIES)
-    tb.spindle_candidates(base, ["velocity_rms_mm_s"])
-    assert diagnosis.QUANTITIES == bearing_quantities
+def test_spec_carries_its_registry_and_bad_input_rejected(spindle, base):
+    # the spindle's quantities and candidates come from the spec itself; the
+    # bearing registry is untouched by a spindle diagnosis
+    assert base.quantities is SPINDLE_QUANTITIES
     assert "temperature_c:front_outer" not in diagnosis.QUANTITIES
+    a = tb.spindle_candidates(base, ["velocity_rms_mm_s"])
+    assert a.equals(tb.candidates(base, ["velocity_rms_mm_s"]))
+    assert "sensor_offset:velocity_rms_mm_s" in a["name"].to_list()
+    assert set(a["role"]) == {"effect", "calibration", "measurement"}
+    with pytest.raises(ConfigError, match="quantity"):
+        tb.candidates(base, ["temperature_c:To"])
     with pytest.raises(ConfigError, match="effect"):
         tb.SpindleModelSpec(spindle, effects=["no_such_effect"])
     with pytest.raises(ConfigError, match="option"):
@@ -196,7 +202,7 @@ def test_without_axial_growth_thermal_displacement_is_only_a_look_alike(base):
 
 
 def test_diagnose_accepts_a_spindle_model_directly():
-    """tb.diagnose with a SpindleModelSpec runs under the spindle registry and
+    """tb.diagnose with a SpindleModelSpec uses the spec's own registry and
     gives the same result as tb.diagnose_spindle."""
     model = tb.SpindleModelSpec(
         tb.Spindle.preset("seed-ceramic-spindle"), effects=["centrifugal_force"]

@@ -89,61 +89,20 @@ _NODE_NAMES = {
 # conducting into the machine frame above; natural and slow forced air
 # convection coefficients differ by about a decade, 5-10 vs 25-100 W/m^2K).
 _PARAMETERS = (
-    (
-        "lubrication_factor_f0",
-        "lubrication_factor_f0",
-        "1",
-        0.5,
-        6.0,
-        False,
-        "viscous/churning loss scale (Palmgren f0)",
-    ),
-    (
-        "spin_friction_coefficient",
-        "spin_friction",
-        "1",
-        0.0,
-        0.3,
-        False,
-        "spin friction coefficient mu_s (needs the spin_friction effect on)",
-    ),
-    (
-        "oil_air_temperature_offset_k",
-        "oil_air_temperature_c",
-        "K",
-        -10.0,
-        20.0,
-        True,
-        "oil-air (cooling) temperature differs from the assumed one",
-    ),
-    (
-        "ambient_temperature_offset_k",
-        "ambient_temperature_c",
-        "K",
-        -10.0,
-        20.0,
-        True,
-        "ambient temperature differs from the assumed one",
-    ),
-    (
-        "extra_heat_w",
-        "extra_heat_w",
-        "W",
-        0.0,
-        100.0,
-        False,
-        "extra heat at the bearing (e.g. magnetic-pull friction), split like rolling heat",
-    ),
-    (
-        "housing_conductance_scale",
-        "housing_conductance_scale",
-        "1",
-        0.1,
-        10.0,
-        False,
-        "housing-to-ambient conductance differs from the bare natural-convection cylinder",
-    ),
-)
+    # (name, option, unit, lower, upper, offset?, role, description)
+    ("lubrication_factor_f0", "lubrication_factor_f0", "1", 0.5, 6.0, False, "calibration",
+     "viscous/churning loss scale (Palmgren f0)"),
+    ("spin_friction_coefficient", "spin_friction", "1", 0.0, 0.3, False, "calibration",
+     "spin friction coefficient mu_s (needs the spin_friction effect on)"),
+    ("oil_air_temperature_offset_k", "oil_air_temperature_c", "K", -10.0, 20.0, True,
+     "calibration", "oil-air (cooling) temperature differs from the assumed one"),
+    ("ambient_temperature_offset_k", "ambient_temperature_c", "K", -10.0, 20.0, True,
+     "calibration", "ambient temperature differs from the assumed one"),
+    ("extra_heat_w", "extra_heat_w", "W", 0.0, 100.0, False, "effect",
+     "extra heat at the bearing (e.g. magnetic-pull friction), split like rolling heat"),
+    ("housing_conductance_scale", "housing_conductance_scale", "1", 0.1, 10.0, False, "effect",
+     "housing-to-ambient conductance differs from the bare natural-convection cylinder"),
+)  # fmt: skip
 
 _HOUSING_MATERIALS = ("aluminium", "cast-iron", "shaft-steel")
 _THERMAL_DEFAULTS = {
@@ -163,9 +122,11 @@ _THERMAL_DEFAULTS = {
 # measured data
 
 
-def load_measurements(data: Any) -> "polars.DataFrame":  # noqa: F821
+def load_measurements(data: Any, quantities: Optional[dict] = None) -> "polars.DataFrame":  # noqa: F821
     """Read and check a tidy measurement table (CSV or parquet path, or a
-    polars/pandas frame).
+    polars/pandas frame). ``quantities``: the quantity registry of the model
+    the data are for (default :data:`QUANTITIES`, the single bearing's; a
+    model spec's is its ``quantities`` attribute).
 
     Columns: ``speed_rpm``; ``axial_n`` or ``preload_n`` (the preload is the
     axial load of a single bearing); optional ``radial_n`` (default 0);
@@ -222,12 +183,13 @@ def load_measurements(data: Any) -> "polars.DataFrame":  # noqa: F821
         raise DataError(f"invalid speed_rpm = {df['speed_rpm'].min()}: negative")
     if (df["axial_n"] < 0).any():
         raise DataError(f"invalid axial_n = {df['axial_n'].min()}: negative")
+    table = QUANTITIES if quantities is None else quantities
     df = df.with_columns(pl.col("quantity").cast(pl.Utf8))
     for q in df["quantity"].unique().to_list():
-        if q not in QUANTITIES:
-            raise DataError(f"invalid quantity = {q!r}: known: {', '.join(QUANTITIES)}")
+        if q not in table:
+            raise DataError(f"invalid quantity = {q!r}: known: {', '.join(table)}")
         v = df.filter(pl.col("quantity") == q)["value"].to_numpy()
-        lo, hi = QUANTITIES[q][2]
+        lo, hi = table[q][2]
         if q.startswith("temperature_c") and np.all((v > 200.0) & (v < 500.0)):
             raise DataError(
                 f"invalid value = {v[0]} for {q}: looks like kelvin; give deg C (subtract 273.15)"
@@ -239,8 +201,8 @@ def load_measurements(data: Any) -> "polars.DataFrame":  # noqa: F821
         if (df["sigma"] <= 0).any():
             raise DataError(f"invalid sigma = {df['sigma'].min()}: must be > 0")
     else:
-        typ = [QUANTITIES[q][3] for q in df["quantity"].to_list()]
-        rel = [QUANTITIES[q][4] for q in df["quantity"].to_list()]
+        typ = [table[q][3] for q in df["quantity"].to_list()]
+        rel = [table[q][4] for q in df["quantity"].to_list()]
         v = df["value"].to_numpy()
         s = np.where(rel, np.abs(v) * np.asarray(typ), np.asarray(typ))
         df = df.with_columns(pl.Series("sigma", s))
@@ -262,7 +224,16 @@ class BearingModelSpec:
     ``ambient_temperature_c``, ``housing_material``, ``raceway_control``,
     ``extra_heat_w``, ``housing_conductance_scale``).
     Evaluates every quantity of :data:`QUANTITIES` at given conditions; each
-    configuration is solved once per set of conditions (cached)."""
+    configuration is solved once per set of conditions (cached).
+
+    The protocol :func:`diagnose` uses (a spec of another machine, such as
+    :class:`thermobear.SpindleModelSpec`, provides the same): ``quantities``
+    (the quantity registry), ``candidate_list(quantities)``,
+    ``predict(conditions)``, ``with_setting(add_effects, **options)``,
+    ``options``, ``effects``."""
+
+    #: The quantities this model predicts (see :data:`QUANTITIES`).
+    quantities = QUANTITIES
 
     def __init__(self, bearing: Any, effects: Optional[Sequence[str]] = None, **options: Any):
         from . import _native
@@ -335,6 +306,11 @@ class BearingModelSpec:
                 out[q][rows] = res[q][idx]
         return out
 
+    def candidate_list(self, quantities: Sequence[str] = ()) -> list["Candidate"]:
+        """The candidates against this baseline, with a sensor-offset decoy
+        per measured quantity in ``quantities``."""
+        return _candidate_list(self, quantities)
+
     def __repr__(self) -> str:
         return f"BearingModelSpec({self.bearing!r}, effects={list(self.effects)})"
 
@@ -359,6 +335,11 @@ class Candidate:
     offset: bool = False
     quantity: str = ""
     effect: str = ""
+    #: "effect" (a physical term the baseline leaves out), "calibration" (a
+    #: baseline input whose value may be off) or "measurement" (a decoy on
+    #: the measurement side)
+    role: str = "effect"
+    relative: bool = False  # measurement offsets: relative (x (1 + v)) or additive
 
 
 def _candidate_list(
@@ -392,7 +373,7 @@ def _candidate_list(
                 effect=name,
             )
         )
-    for name, opt, unit, lo, hi, is_off, desc in _PARAMETERS:
+    for name, opt, unit, lo, hi, is_off, role, desc in _PARAMETERS:
         base = float(opts[opt])
         if is_off:
             null, lo_, hi_ = 0.0, lo, hi
@@ -412,6 +393,7 @@ def _candidate_list(
                 tuple(QUANTITIES),
                 option=opt,
                 offset=is_off,
+                role=role,
             )
         )
     for mat in _HOUSING_MATERIALS:
@@ -430,6 +412,7 @@ def _candidate_list(
                     f"housing conductance/expansion of {mat}",
                     temps + mech,
                     option="housing_material",
+                    role="calibration",
                 )
             )
     out += sensor_offset_candidates(quantities, QUANTITIES)
@@ -459,6 +442,8 @@ def sensor_offset_candidates(quantities: Sequence[str], table: dict) -> list:
                 (q,),
                 offset=True,
                 quantity=q,
+                role="measurement",
+                relative=bool(rel),
             )
         )
     return out
@@ -467,23 +452,27 @@ def sensor_offset_candidates(quantities: Sequence[str], table: dict) -> list:
 def candidates(
     model: Optional[BearingModelSpec] = None, quantities: Sequence[str] = ()
 ) -> "polars.DataFrame":  # noqa: F821
-    """The candidate registry: ``name``, ``kind`` ("switch" or
-    "parameter"), ``side`` ("model" or "measurement" for the sensor-offset
-    decoys, one per measured quantity in ``quantities``), ``parameter``,
+    """The candidate registry against a baseline: ``name``, ``kind``
+    ("switch" or "parameter"), ``role`` ("effect": a physical term the
+    baseline leaves out; "calibration": a baseline input whose value may be
+    off; "measurement": a sensor-offset decoy, one per measured quantity in
+    ``quantities``), ``side`` ("model" or "measurement"), ``parameter``,
     ``unit``, ``lower``, ``upper`` (physical bounds), ``default`` (the null
     value: the baseline's), ``description``, ``affects``. Without ``model``
     the baseline is the default :func:`thermobear.thermal_state` options
     with no effect switched on (every effect is listed)."""
     import polars as pl
 
+    table = QUANTITIES if model is None else model.quantities
     for q in quantities:
-        if q not in QUANTITIES:
-            raise ConfigError(f"invalid quantity = {q!r}: known: {', '.join(QUANTITIES)}")
-    cs = _candidate_list(model, quantities)
+        if q not in table:
+            raise ConfigError(f"invalid quantity = {q!r}: known: {', '.join(table)}")
+    cs = _candidate_list(None, quantities) if model is None else model.candidate_list(quantities)
     return pl.DataFrame(
         {
             "name": [c.name for c in cs],
             "kind": [c.kind for c in cs],
+            "role": [c.role for c in cs],
             "side": [c.side for c in cs],
             "parameter": [c.parameter for c in cs],
             "unit": [c.unit for c in cs],
@@ -509,8 +498,9 @@ class _Setting:
     def apply(self, c: Candidate, value: float, base_options: dict) -> "_Setting":
         opts = dict(self.options)
         if c.side == "measurement":
-            rel = QUANTITIES[c.quantity][4]
-            return _Setting(self.effects, self.options, self.offsets + ((c.quantity, value, rel),))
+            return _Setting(
+                self.effects, self.options, self.offsets + ((c.quantity, value, c.relative),)
+            )
         if c.kind == "switch":
             if c.effect:
                 return (
@@ -610,8 +600,6 @@ def _cosine(a: np.ndarray, b: np.ndarray) -> float:
 
 
 _GRID = 13  # parameter values evaluated per candidate (cubic interpolant between)
-#: Set while a spec's own registry (quantities, candidates) is swapped in.
-_REGISTRY_ACTIVE = [False]
 _DENSE = 601
 _CHI2_95 = 3.841  # chi^2(1) 95 % quantile: profile interval
 
@@ -910,12 +898,14 @@ def _suggest(model, st, ca, cb, fa, fb, df, base_options):
         }
     )
 
+    table = model.quantities
+
     def response(c):
         step = 1.0 if c.kind == "switch" else 0.05 * (c.upper - c.lower)
         v0 = 0.0 if c.kind == "switch" else c.null
         v1 = v0 + step if v0 + step <= c.upper else v0 - step
         out = {}
-        for q in QUANTITIES:
+        for q in table:
             qa = np.array([q] * len(grid))
             p0 = _predict(model, st.apply(c, v0, base_options), cond, qa)
             p1 = _predict(model, st.apply(c, v1, base_options), cond, qa)
@@ -930,8 +920,8 @@ def _suggest(model, st, ca, cb, fa, fb, df, base_options):
         return "", float("nan")
     scale = float(fa @ fb / (fb @ fb)) if fb @ fb > 0 else 0.0
     best, where = -1.0, ("", float("nan"))
-    for q in QUANTITIES:
-        typ, rel = QUANTITIES[q][3], QUANTITIES[q][4]
+    for q in table:
+        typ, rel = table[q][3], table[q][4]
         base = _predict(model, st, cond, np.array([q] * len(grid)))
         sig = np.abs(base) * typ if rel else np.full(len(grid), typ)
         d = np.abs(ra[q] - scale * rb[q]) / np.maximum(sig, 1e-300)
@@ -990,6 +980,9 @@ def _joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_optio
     return st, _predict(model, st, cond, quantity)
 
 
+_SPEC_PROTOCOL = ("quantities", "candidate_list", "predict", "with_setting", "options", "effects")
+
+
 def diagnose(
     model: BearingModelSpec,
     measured: Any,
@@ -1012,32 +1005,19 @@ def diagnose(
     import polars as pl
     from scipy.stats import chi2 as chi2_dist
 
-    if not isinstance(model, BearingModelSpec):
-        raise ConfigError(f"invalid model = {model!r}: give a thermobear.BearingModelSpec")
-    registry = getattr(model, "_registry", None)
-    if registry is not None and not _REGISTRY_ACTIVE[0]:
-        # A spec with its own quantities and candidates (the spindle) runs
-        # the same machinery under them.
-        with registry():
-            return diagnose(
-                model,
-                measured,
-                candidates,
-                holdout,
-                max_rounds=max_rounds,
-                delta_bic_min=delta_bic_min,
-                tie_delta_bic=tie_delta_bic,
-                lookalike_cosine=lookalike_cosine,
-                suggest=suggest,
-            )
-    df = load_measurements(measured)
+    if not all(hasattr(model, a) for a in _SPEC_PROTOCOL):
+        raise ConfigError(
+            f"invalid model = {model!r}: give a thermobear.BearingModelSpec or "
+            "SpindleModelSpec (or an object with " + ", ".join(_SPEC_PROTOCOL) + ")"
+        )
+    df = load_measurements(measured, model.quantities)
     quantity = df["quantity"].to_numpy()
     y, s = df["value"].to_numpy(), df["sigma"].to_numpy()
     cond = df.select(["speed_rpm", "axial_n", "radial_n"])
     held = _holdout_mask(df, holdout)
     train = ~held
     n_train = int(train.sum())
-    pool = _candidate_list(model, sorted(set(quantity.tolist())))
+    pool = model.candidate_list(sorted(set(quantity.tolist())))
     if candidates is not None:
         names = {c.name for c in pool}
         for n in candidates:
@@ -1162,7 +1142,9 @@ def diagnose(
             {
                 "name": c.name,
                 "side": c.side,
+                "role": c.role,
                 "parameter": c.parameter,
+                "null": c.null,
                 "unit": c.unit,
                 "value": best["value"],
                 "lower_95": best["lower_95"],
@@ -1182,27 +1164,10 @@ def diagnose(
             st, pred = joint
     r1 = (y - pred) / s
     p_final = float(chi2_dist.sf(_chi2(r1[train]), n_train))
-    physical = [a for a in accepted if a["side"] == "model"]
-    sensor = [a for a in accepted if a["side"] == "measurement"]
+    parts = [_verdict_part(a) for a in accepted]
     if tie:
-        verdict = "tie: " + " | ".join(tie) + " (the data cannot tell them apart)"
-    elif accepted:
-        parts = []
-        for a in physical:
-            parts.append(
-                f"missing effect {a['name']}"
-                + (
-                    f" ({a['parameter']} = {a['value']:.4g}{_unit(a['unit'])}, 95 % "
-                    f"[{a['lower_95']:.4g}, {a['upper_95']:.4g}])"
-                    if a["lower_95"] is not None
-                    else ""
-                )
-            )
-        for a in sensor:
-            parts.append(
-                f"measurement-side {a['name']} = {a['value']:.4g}{_unit(a['unit'])} "
-                f"(95 % [{a['lower_95']:.4g}, {a['upper_95']:.4g}])"
-            )
+        parts.append("tie: " + " | ".join(tie) + " (the data cannot tell them apart)")
+    if parts:
         verdict = "; ".join(parts)
     elif p_final < 0.01:
         verdict = "structured residual not explained by any known effect"
@@ -1230,6 +1195,27 @@ def diagnose(
         points,
         sorted(set(not_evaluable)),
         notes,
+    )
+
+
+def _verdict_part(a: dict) -> str:
+    """One accepted candidate in words, by its role."""
+    u = _unit(a["unit"])
+    if a["lower_95"] is None:
+        interval = ""
+    else:
+        interval = f"95 % [{a['lower_95']:.4g}, {a['upper_95']:.4g}]"
+    if a["role"] == "measurement":
+        return f"measurement-side {a['name']} = {a['value']:.4g}{u} ({interval})"
+    if a["role"] == "calibration":
+        return (
+            f"miscalibrated baseline parameter {a['name']}: {a['parameter']} = "
+            f"{a['value']:.4g}{u} (baseline {a['null']:.4g}{u}; {interval})"
+            if interval
+            else f"miscalibrated baseline setting {a['name']}"
+        )
+    return f"missing effect {a['name']}" + (
+        f" ({a['parameter']} = {a['value']:.4g}{u}, {interval})" if interval else ""
     )
 
 

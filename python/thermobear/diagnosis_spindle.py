@@ -24,10 +24,8 @@ one sensor-offset decoy per measured quantity.
 
 from __future__ import annotations
 
-import threading
-from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Iterator, Optional, Sequence, Union
+from typing import Any, Optional, Sequence, Union
 
 import numpy as np
 
@@ -100,11 +98,13 @@ class SpindleModelSpec(BearingModelSpec):
     Each configuration, preload and speed is solved once (cached, shared by
     the copies of :meth:`with_setting`)."""
 
-    @staticmethod
-    def _registry() -> Any:
-        """The spindle's quantities and candidates, for
-        :func:`thermobear.diagnose`."""
-        return _spindle_registry()
+    #: The quantities this model predicts (:data:`SPINDLE_QUANTITIES`).
+    quantities = SPINDLE_QUANTITIES
+
+    def candidate_list(self, quantities: Sequence[str] = ()) -> list[Candidate]:
+        """The spindle's candidates against this baseline, with a
+        sensor-offset decoy per measured quantity in ``quantities``."""
+        return _spindle_candidate_list(self, quantities)
 
     def __init__(self, spindle: Any, effects: Optional[Sequence[str]] = None, **options: Any):
         from . import _native
@@ -355,6 +355,7 @@ def _spindle_candidate_list(model: Optional[SpindleModelSpec], quantities: Seque
             "spin friction coefficient mu_s (acts with the spin_friction effect on)",
             allq,
             option="spin_friction",
+            role="calibration",
         )
     )
     other = "rigid" if opts["preload_kind"] == "spring" else "spring"
@@ -372,6 +373,7 @@ def _spindle_candidate_list(model: Optional[SpindleModelSpec], quantities: Seque
                 f"preload by {'fixed position' if other == 'rigid' else 'constant-force spring'}",
                 allq,
                 option="preload_kind",
+                role="calibration",
             )
         )
     if opts["preload_kind"] == "spring":
@@ -389,6 +391,7 @@ def _spindle_candidate_list(model: Optional[SpindleModelSpec], quantities: Seque
                 "preload spring rate (thermal growth changes the preload by rate x growth)",
                 allq,
                 option="spring_rate_n_per_um",
+                role="calibration",
             )
         )
     g = _on_grid(float(opts["unbalance_grade"]), *_UNBALANCE_BOUNDS)
@@ -405,6 +408,7 @@ def _spindle_candidate_list(model: Optional[SpindleModelSpec], quantities: Seque
             "residual unbalance of the rotor (ISO 21940 grade at 30,000 rpm)",
             (_VIB,),
             option="unbalance_grade",
+            role="calibration",
         )
     )
     out += _dg.sensor_offset_candidates(quantities, SPINDLE_QUANTITIES)
@@ -423,42 +427,21 @@ def _on_grid(null: float, lo: float, hi: float) -> float:
     return float(grid[i]) if abs(grid[i] - null) <= 1e-9 * (hi - lo) else null
 
 
-_LOCK = threading.RLock()
-
-
-@contextmanager
-def _spindle_registry() -> Iterator[None]:
-    """Run the :mod:`thermobear.diagnosis` machinery with the spindle's
-    quantity and candidate registry (its functions read both module globals
-    at call time); restored on exit, one diagnosis at a time."""
-    with _LOCK:
-        saved = (_dg.QUANTITIES, _dg._candidate_list)
-        active = _dg._REGISTRY_ACTIVE[0]
-        _dg.QUANTITIES = SPINDLE_QUANTITIES
-        _dg._candidate_list = _spindle_candidate_list
-        _dg._REGISTRY_ACTIVE[0] = True
-        try:
-            yield
-        finally:
-            _dg.QUANTITIES, _dg._candidate_list = saved
-            _dg._REGISTRY_ACTIVE[0] = active
-
-
 def spindle_candidates(
     model: Optional[SpindleModelSpec] = None, quantities: Sequence[str] = ()
 ) -> "polars.DataFrame":  # noqa: F821
     """The spindle candidate registry (columns as
     :func:`thermobear.candidates`); without ``model`` the baseline is
     the seed ceramic spindle with every effect off."""
-    with _spindle_registry():
-        return _dg.candidates(model, quantities)
+    if model is None:
+        model = SpindleModelSpec(Spindle.preset("seed-ceramic-spindle"), effects=[])
+    return _dg.candidates(model, quantities)
 
 
 def load_spindle_measurements(data: Any) -> "polars.DataFrame":  # noqa: F821
     """:func:`thermobear.load_measurements` with the spindle quantities of
     :data:`SPINDLE_QUANTITIES` (``preload_n`` is stored as ``axial_n``)."""
-    with _spindle_registry():
-        return _dg.load_measurements(data)
+    return _dg.load_measurements(data, SPINDLE_QUANTITIES)
 
 
 def diagnose_spindle(
@@ -474,8 +457,7 @@ def diagnose_spindle(
     candidates (:func:`spindle_candidates`)."""
     if not isinstance(model, SpindleModelSpec):
         raise ConfigError(f"invalid model = {model!r}: give a thermobear.SpindleModelSpec")
-    with _spindle_registry():
-        return _dg.diagnose(model, measured, candidates, holdout, **options)
+    return _dg.diagnose(model, measured, candidates, holdout, **options)
 
 
 def seed_b_measurements() -> "polars.DataFrame":  # noqa: F821
