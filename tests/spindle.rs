@@ -197,3 +197,31 @@ fn optimal_preload_trades_stiffness_against_heat() {
         .iter()
         .any(|g| g.preload_n == b.optimal_preload_n && g.total_radial_displacement_m() == min));
 }
+
+#[test]
+fn spin_friction_switch_removes_only_the_spin_heat() {
+    use thermobear::effects::Effect;
+    let on = Spindle::seed_b("hybrid").unwrap();
+    let mut cfg = on.config.clone();
+    cfg.effects = cfg.effects.without(Effect::SpinFriction);
+    let off = Spindle::new(cfg).unwrap();
+    let (a, b) = (on.steady_state(15_000.0).unwrap(), off.steady_state(15_000.0).unwrap());
+    let spin = |s: &SpindleState| -> Vec<f64> {
+        s.bearing_heat
+            .iter()
+            .map(|h| h.heat.inner_spin_w + h.heat.outer_spin_w)
+            .collect()
+    };
+    assert!(spin(&b).iter().all(|w| *w == 0.0), "{:?}", spin(&b));
+    assert!(spin(&a).iter().all(|w| *w > 0.0), "{:?}", spin(&a));
+    // the rest of the heat is the same physics: less heat, a cooler spindle
+    let total = |s: &SpindleState| s.bearing_heat.iter().map(|h| h.heat.total_w()).sum::<f64>();
+    assert!(total(&b) < total(&a));
+    // Spin heat is delivered mostly to the inner rings and balls, so
+    // those run cooler without it (the outer rings may run warmer: cooler
+    // oil is more viscous and the viscous heat grows, A-21).
+    for node in ["front_inner", "front_balls", "rear_inner", "rear_balls"] {
+        let (x, y) = (b.temperatures.get(node).unwrap(), a.temperatures.get(node).unwrap());
+        assert!(x < y - 0.5, "{node}: {x} vs {y}");
+    }
+}

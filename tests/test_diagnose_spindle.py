@@ -78,7 +78,12 @@ def test_predictions_equal_direct_model_calls(spindle, base):
             assert p["temperature_c:front_outer"][i] == row["front_outer_c"][0]
             assert p["temperature_c:rear_outer"][i] == row["rear_outer_c"][0]
             assert p["axial_growth_um"][i] == row["axial_growth_um"][0]
-        direct = tb.vibration(spindle.with_options(effects=list(spec.effects)), speeds, coupled=on)
+        direct = tb.vibration(
+            spindle.with_options(effects=list(spec.effects)),
+            speeds,
+            coupled=on,
+            effects=list(spec.effects),
+        )
         np.testing.assert_allclose(
             p["velocity_rms_mm_s"], direct["velocity_rms_mm_s"].to_numpy(), rtol=1e-12
         )

@@ -698,25 +698,15 @@ def _fit(curve: _Curve, y, s, train) -> dict:
         )
         if res.fun < best_c:
             best_v, best_c = float(res.x), float(res.fun)
+
     # contiguous 95 % profile interval around the best value; the edges are
     # refined by root finding on the interpolant (the dense grid is coarse)
-    from scipy.optimize import brentq
-
     def excess(v: float) -> float:
         p1 = curve.at(np.array([v]))[0]
         return float(np.sum(((y[train] - p1[train]) / s[train]) ** 2)) - best_c - _CHI2_95
 
-    ok = chi <= best_c + _CHI2_95
-    j0 = j1 = i
-    while j0 > 0 and ok[j0 - 1]:
-        j0 -= 1
-    while j1 < _DENSE - 1 and ok[j1 + 1]:
-        j1 += 1
-    lo95, hi95 = float(grid[j0]), float(grid[j1])
-    if j0 > 0:
-        lo95 = brentq(excess, grid[j0 - 1], min(grid[j0], best_v))
-    if j1 < _DENSE - 1:
-        hi95 = brentq(excess, max(grid[j1], best_v), grid[j1 + 1])
+    lo95 = _profile_edge(excess, grid, chi, best_v, best_c, -1)
+    hi95 = _profile_edge(excess, grid, chi, best_v, best_c, +1)
     tol = (hi - lo) * 0.01
     return {
         "value": float(best_v),
@@ -727,6 +717,29 @@ def _fit(curve: _Curve, y, s, train) -> dict:
         "at_bound": bool(best_v <= lo + tol or best_v >= hi - tol),
         "excludes_null": bool(not (lo95 <= c.null <= hi95)),
     }
+
+
+def _profile_edge(excess, grid, chi, best_v, best_c, direction) -> float:
+    """Edge of the contiguous 95 % profile interval around ``best_v`` on one
+    side: the nearest dense-grid point beyond which chi^2 exceeds the
+    minimum by 3.84 brackets the root of ``excess`` with the last point
+    inside (or ``best_v`` itself when the interval is narrower than the
+    grid spacing); the interval reaches the bound when no point is outside."""
+    from scipy.optimize import brentq
+
+    out = chi > best_c + _CHI2_95
+    side = grid < best_v if direction < 0 else grid > best_v
+    idx = np.flatnonzero(out & side)
+    if idx.size == 0:
+        return float(grid[0] if direction < 0 else grid[-1])
+    j = int(idx[-1] if direction < 0 else idx[0])
+    inner = grid[j + 1] if direction < 0 else grid[j - 1]
+    inner = max(inner, best_v) if direction > 0 else min(inner, best_v)
+    a, b = (grid[j], inner) if direction < 0 else (inner, grid[j])
+    fa, fb = excess(a), excess(b)
+    if fa * fb > 0.0:  # rounding at the bracket: the grid point is the edge
+        return float(grid[j])
+    return float(brentq(excess, a, b))
 
 
 # --------------------------------------------------------------------------

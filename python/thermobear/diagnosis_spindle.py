@@ -203,6 +203,7 @@ class SpindleModelSpec(BearingModelSpec):
                     speeds,
                     coupled=self.coupled,
                     unbalance_grade=float(self.options["unbalance_grade"]),
+                    effects=list(self.effects),
                 )
             except ThermobearError as e:
                 self._cache[key] = e

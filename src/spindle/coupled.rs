@@ -428,14 +428,14 @@ impl Spindle {
                 })
                 .collect()
         };
-        let heat = bearing_heat(
-            rpm_to_rad_s(speed_rpm),
-            m1,
-            mv,
-            self.config.spin_friction,
-            &contacts(true),
-            &contacts(false),
-        )?;
+        // Spin heat only with the spin-friction effect on, as in
+        // the single-bearing model (src/thermal/coupled.rs).
+        let (ci, co) = if self.config.effects.has(Effect::SpinFriction) {
+            (contacts(true), contacts(false))
+        } else {
+            (Vec::new(), Vec::new())
+        };
+        let heat = bearing_heat(rpm_to_rad_s(speed_rpm), m1, mv, self.config.spin_friction, &ci, &co)?;
         Ok(BearingHeatReport {
             heat,
             split: heat.split(),
