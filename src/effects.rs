@@ -32,11 +32,14 @@ pub enum Effect {
     UnbalancedMagneticPull = 9,
     /// Spin friction heat at the ball-raceway contacts (A-22, A-23).
     SpinFriction = 10,
+    /// Axial thermal growth of the shaft relative to the housing between
+    /// the bearing sets compressing a spring preload pack (src/spindle).
+    PreloadChangeFromAxialGrowth = 11,
 }
 
 impl Effect {
     /// Every effect, in registry order.
-    pub const ALL: [Effect; 11] = [
+    pub const ALL: [Effect; 12] = [
         Effect::CentrifugalForce,
         Effect::GyroscopicMoment,
         Effect::RingCentrifugalExpansion,
@@ -48,7 +51,14 @@ impl Effect {
         Effect::TemperatureDependentViscosity,
         Effect::UnbalancedMagneticPull,
         Effect::SpinFriction,
+        Effect::PreloadChangeFromAxialGrowth,
     ];
+
+    /// The models an effect can act in: `"bearing"` (single-bearing
+    /// quasi-statics, src/bearing, and the coupled single-bearing thermal
+    /// model, src/thermal), `"spindle"` (the coupled spindle, src/spindle)
+    /// and `"rotor"` (the rotor dynamics on solver rows, src/rotor).
+    pub const MODELS: [&'static str; 3] = ["bearing", "spindle", "rotor"];
 
     /// The public name.
     pub fn name(self) -> &'static str {
@@ -64,6 +74,7 @@ impl Effect {
             Effect::TemperatureDependentViscosity => "temperature_dependent_viscosity",
             Effect::UnbalancedMagneticPull => "unbalanced_magnetic_pull",
             Effect::SpinFriction => "spin_friction",
+            Effect::PreloadChangeFromAxialGrowth => "preload_change_from_axial_growth",
         }
     }
 
@@ -101,6 +112,42 @@ impl Effect {
             Effect::SpinFriction => {
                 "spin friction heat (3/8) mu_s Q a E |omega_s| per ball-raceway contact (A-22, A-23)"
             }
+            Effect::PreloadChangeFromAxialGrowth => {
+                "axial thermal growth of the shaft relative to the housing between the bearing sets compresses \
+                 the preload spring pack (spring preload: force change = rate x growth; spindle model only)"
+            }
+        }
+    }
+
+    /// The models (of [`Effect::MODELS`]) that read this effect, as the
+    /// code does: the ball solver's terms act wherever bearings are solved
+    /// (every model), the thermal ones where a temperature field exists
+    /// (bearing, spindle; the rotor takes its thermal raceway offsets as
+    /// input). `spin_friction` is read by the single-bearing thermal model
+    /// only (the spindle always includes spin heat with its own
+    /// coefficient).
+    pub fn models(self) -> &'static [&'static str] {
+        const ALL_MODELS: &[&str] = &["bearing", "spindle", "rotor"];
+        const THERMAL: &[&str] = &["bearing", "spindle"];
+        match self {
+            // src/bearing/quasi_static.rs (SpeedContext), used by the
+            // spindle pairs and the rotor's preloaded rows alike.
+            Effect::CentrifugalForce | Effect::GyroscopicMoment | Effect::RingCentrifugalExpansion => ALL_MODELS,
+            // src/thermal/expansion.rs thermal_offsets (bearing thermal
+            // model, spindle pairs) and the spindle's axial growth.
+            Effect::ThermalExpansionShaft
+            | Effect::ThermalExpansionInnerRing
+            | Effect::ThermalExpansionOuterRing
+            | Effect::ThermalExpansionBalls
+            | Effect::ThermalExpansionHousing => THERMAL,
+            // src/thermal/coupled.rs and src/spindle/coupled.rs heat sources.
+            Effect::TemperatureDependentViscosity => THERMAL,
+            // src/rotor/spindle_vibration.rs.
+            Effect::UnbalancedMagneticPull => &["rotor"],
+            // src/thermal/coupled.rs heat sources.
+            Effect::SpinFriction => &["bearing"],
+            // src/spindle/coupled.rs evaluate.
+            Effect::PreloadChangeFromAxialGrowth => &["spindle"],
         }
     }
 
@@ -181,5 +228,23 @@ mod tests {
             EffectSet::all().without(Effect::CentrifugalForce).names().len(),
             Effect::ALL.len() - 1
         );
+    }
+
+    #[test]
+    fn every_effect_acts_in_a_known_model() {
+        for e in Effect::ALL {
+            assert!(!e.models().is_empty(), "{} acts nowhere", e.name());
+            for m in e.models() {
+                assert!(Effect::MODELS.contains(m), "{}: unknown model {m}", e.name());
+            }
+        }
+        // Registry order is the discriminant order (one bit per effect).
+        for (i, e) in Effect::ALL.iter().enumerate() {
+            assert_eq!(*e as usize, i, "{}", e.name());
+        }
+        let e = Effect::from_name("preload_change_from_axial_growth").unwrap();
+        assert_eq!(e, Effect::PreloadChangeFromAxialGrowth);
+        assert_eq!(e.models(), &["spindle"]);
+        assert_eq!(Effect::UnbalancedMagneticPull.models(), &["rotor"]);
     }
 }

@@ -51,11 +51,19 @@ __version__: str = _native.__version__
 
 
 def effects() -> "polars.DataFrame":  # noqa: F821
-    """The registry of named physical effects: ``name``, ``description``."""
+    """The registry of named physical effects: ``name``, ``description``,
+    ``models`` (comma-joined models the effect acts in: ``bearing``,
+    ``spindle``, ``rotor``)."""
     import polars as pl
 
     rows = _native.effects()
-    return pl.DataFrame({"name": [r[0] for r in rows], "description": [r[1] for r in rows]})
+    return pl.DataFrame(
+        {
+            "name": [r[0] for r in rows],
+            "description": [r[1] for r in rows],
+            "models": [",".join(r[2]) for r in rows],
+        }
+    )
 
 
 from . import plot  # noqa: E402  (plot imports matplotlib lazily)

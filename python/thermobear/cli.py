@@ -36,7 +36,7 @@ def _cmd_presets(args: argparse.Namespace) -> int:
 def _cmd_effects(args: argparse.Namespace) -> int:
     from . import _native
 
-    for name, desc in _native.effects():
+    for name, desc, *_ in _native.effects():
         print(f"{name:32s} {desc}")
     return 0
 

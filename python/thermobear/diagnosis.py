@@ -241,7 +241,7 @@ class BearingModelSpec:
 
         if not isinstance(bearing, Bearing):
             raise ConfigError(f"invalid bearing = {bearing!r}: give a thermobear.Bearing")
-        known = [n for n, _ in _native.effects()]
+        known = [n for n, *_ in _native.effects()]
         eff = list(known) if effects is None else [str(e) for e in effects]
         for e in eff:
             if e not in known:
@@ -352,7 +352,7 @@ def _candidate_list(
     temps = tuple(q for q in QUANTITIES if q.startswith("temperature_c"))
     mech = tuple(q for q in QUANTITIES if not q.startswith("temperature_c"))
     out = []
-    for name, desc in _native.effects():
+    for name, desc, *_ in _native.effects():
         if name in base_eff:
             continue
         affects = (

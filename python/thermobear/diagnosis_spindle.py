@@ -115,7 +115,7 @@ class SpindleModelSpec(BearingModelSpec):
             if k not in _OPTIONS:
                 raise ConfigError(f"invalid option = {k!r}: known: {', '.join(_OPTIONS)}")
         self.spindle = spindle
-        self._known = tuple(n for n, _ in _native.effects())
+        self._known = tuple(n for n, *_ in _native.effects())
         self.effects = self._expand(list(self._known) if effects is None else effects)
         defaults = {
             "spin_friction": _default_spin_friction(spindle),
@@ -334,7 +334,7 @@ def _spindle_candidate_list(model: Optional[SpindleModelSpec], quantities: Seque
                 effect=_GROUP,
             )
         )
-    for name, desc in _native.effects():
+    for name, desc, *_ in _native.effects():
         if name in base:
             continue
         out.append(

@@ -331,7 +331,8 @@ def compensation_preload(
     growth compresses the spring, dF = k_s u_axial. Columns ``speed_rpm``,
     ``axial_growth_um``, ``compensation_preload_n`` (k_s u),
     ``solved_preload_change_n`` (coupled solve, spring in series with the
-    bearings), ``spring_rate_n_per_um``."""
+    bearings), ``spring_rate_n_per_um``. With the effect
+    ``preload_change_from_axial_growth`` off both preload columns are ~0."""
     import polars as pl
 
     sp = _check(spindle)

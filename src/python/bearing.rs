@@ -368,10 +368,13 @@ fn ball_count_usize(z: i64) -> PyResult<usize> {
     Ok(z as usize)
 }
 
-/// The effects registry: (name, description) pairs.
+/// The effects registry: (name, description, models it acts in) triples.
 #[pyfunction]
-pub fn effects() -> Vec<(&'static str, &'static str)> {
-    Effect::ALL.iter().map(|e| (e.name(), e.description())).collect()
+pub fn effects() -> Vec<(&'static str, &'static str, Vec<&'static str>)> {
+    Effect::ALL
+        .iter()
+        .map(|e| (e.name(), e.description(), e.models().to_vec()))
+        .collect()
 }
 
 /// Check a TOML system description; returns the section names present.

@@ -9,10 +9,18 @@
 //!   width). Both pairs get the same preload per bearing.
 //! * Rigid preload: each pair keeps its assembly interference; the rear set
 //!   floats axially in the housing, so the spindle's axial growth between
-//!   the sets loads nothing. Spring preload: one spring pack in the load path
-//!   of the bearing system (seed B's constant-pressure preload); the axial
+//!   the sets loads nothing (the effect `preload_change_from_axial_growth`
+//!   changes nothing for a rigid preload). Spring preload: one spring pack in
+//!   the load path of the bearing system (seed B's constant-pressure
+//!   preload); with [`Effect::PreloadChangeFromAxialGrowth`] on, the axial
 //!   growth u_axial of the shaft relative to the housing between the two
-//!   sets compresses it, and both pairs carry the spring force.
+//!   sets compresses it by x (bearings in series with the spring, x close
+//!   to u_axial as the bearings are far stiffer axially), and both pairs
+//!   carry the spring force F0 + k_s x. With the effect off the growth does
+//!   not reach the spring (an ideal constant-force preload; the spring still
+//!   takes the pairs' own axial approach changes from speed and thermal
+//!   raceway offsets); the reported `axial_growth_m` is the computed growth
+//!   either way.
 //! * External radial load at the nose (distance `nose_length_m` in front of
 //!   the front pair): rigid shaft on two simple supports (the pairs' moment
 //!   stiffness is not used to share the load): front F (1 + a/L), rear
@@ -378,6 +386,18 @@ impl Spindle {
         shaft_growth - housing_growth
     }
 
+    /// The part of the axial growth between the sets `growth_m` that
+    /// reaches the preload spring [m]: all of it with
+    /// [`Effect::PreloadChangeFromAxialGrowth`] on, none with it off (ideal
+    /// constant-force preload). A rigid pair ignores it (its rear set floats).
+    pub fn spring_growth_m(&self, growth_m: f64) -> f64 {
+        if self.config.effects.has(Effect::PreloadChangeFromAxialGrowth) {
+            growth_m
+        } else {
+            0.0
+        }
+    }
+
     /// Motor losses per node [W] at `speed_rpm` (same law as the network preset).
     fn motor_sources(&self, speed_rpm: f64, s: &mut [f64]) -> f64 {
         let p = &self.config.params;
@@ -467,6 +487,7 @@ impl Spindle {
             }
             None => (zero, zero, 0.0),
         };
+        let spring_growth_m = self.spring_growth_m(growth);
         let to_raceway = |o: &ThermalOffsets, b: &Bearing| {
             let a0 = b.geometry.free_contact_angle_rad;
             RacewayOffsets {
@@ -483,7 +504,7 @@ impl Spindle {
             &PairLoad {
                 load_n_nm: [fr_front, 0.0, 0.0, 0.0, 0.0],
                 offsets: [f_off, f_off],
-                spring_growth_m: growth,
+                spring_growth_m,
             },
             &mut warm.front,
         )?;
@@ -492,7 +513,7 @@ impl Spindle {
             &PairLoad {
                 load_n_nm: [fr_rear, 0.0, 0.0, 0.0, 0.0],
                 offsets: [r_off, r_off],
-                spring_growth_m: growth,
+                spring_growth_m,
             },
             &mut warm.rear,
         )?;
@@ -769,7 +790,9 @@ pub struct CompensationPoint {
     pub speed_rpm: f64,
     /// Axial growth of the shaft relative to the housing between the sets [m].
     pub axial_growth_m: f64,
-    /// k_s u_axial [N] (bearings rigid compared with the spring).
+    /// k_s u_axial [N] (bearings rigid compared with the spring); 0 with
+    /// [`Effect::PreloadChangeFromAxialGrowth`] off (the growth does not
+    /// reach the spring).
     pub compensation_preload_n: f64,
     /// Preload change of the front pair from the coupled solve, spring in
     /// series with the bearings' own axial compliance [N].
@@ -777,7 +800,9 @@ pub struct CompensationPoint {
 }
 
 /// Compensation preload at each speed for a spring preload of rate
-/// `rate_n_per_m` (the spindle's preload force F0 is kept).
+/// `rate_n_per_m` (the spindle's preload force F0 and effects are kept;
+/// with `preload_change_from_axial_growth` off the growth is still
+/// reported but neither the closed form nor the solve sees it).
 pub fn compensation_preload(
     spindle: &Spindle,
     speeds_rpm: &[f64],
@@ -795,7 +820,7 @@ pub fn compensation_preload(
             Ok(CompensationPoint {
                 speed_rpm: n,
                 axial_growth_m: s.axial_growth_m,
-                compensation_preload_n: rate_n_per_m * s.axial_growth_m,
+                compensation_preload_n: rate_n_per_m * sp.spring_growth_m(s.axial_growth_m),
                 solved_preload_change_n: s.front.preload_n - sp.config.preload.force_n(),
             })
         })
