@@ -22,7 +22,7 @@ from thermobear import diagnosis as D
 
 def main() -> None:
     b = tb.Bearing.preset("7008C")
-    full = [e for e in tb.effects()["name"].to_list() if e != "unbalanced_magnetic_pull"]
+    full = [e for e in tb.effects("switch")["name"].to_list() if e != "unbalanced_magnetic_pull"]
     # baseline without spin friction: the switch joins the parameter candidates
     base_eff = [e for e in full if e != "spin_friction"]
     qs = [

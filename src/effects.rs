@@ -123,9 +123,8 @@ impl Effect {
     /// code does: the ball solver's terms act wherever bearings are solved
     /// (every model), the thermal ones where a temperature field exists
     /// (bearing, spindle; the rotor takes its thermal raceway offsets as
-    /// input). `spin_friction` is read by the single-bearing thermal model
-    /// only (the spindle always includes spin heat with its own
-    /// coefficient).
+    /// input). `spin_friction` switches the spin heat of the single-bearing
+    /// and the spindle thermal models.
     pub fn models(self) -> &'static [&'static str] {
         const ALL_MODELS: &[&str] = &["bearing", "spindle", "rotor"];
         const THERMAL: &[&str] = &["bearing", "spindle"];
@@ -144,8 +143,8 @@ impl Effect {
             Effect::TemperatureDependentViscosity => THERMAL,
             // src/rotor/spindle_vibration.rs.
             Effect::UnbalancedMagneticPull => &["rotor"],
-            // src/thermal/coupled.rs heat sources.
-            Effect::SpinFriction => &["bearing"],
+            // src/thermal/coupled.rs and src/spindle/coupled.rs heat sources.
+            Effect::SpinFriction => THERMAL,
             // src/spindle/coupled.rs evaluate.
             Effect::PreloadChangeFromAxialGrowth => &["spindle"],
         }

@@ -26,7 +26,7 @@ SIGMA_REL = 0.01  # stiffness noise, relative
 
 @pytest.fixture(scope="module")
 def full_effects() -> list[str]:
-    return [e for e in tb.effects()["name"].to_list() if e != "unbalanced_magnetic_pull"]
+    return [e for e in tb.effects("switch")["name"].to_list() if e != "unbalanced_magnetic_pull"]
 
 
 @pytest.fixture(scope="module")

@@ -46,8 +46,8 @@ SEEDS = range(30)
 
 
 def _bearing_effects() -> list[str]:
-    eff = tb.effects().filter(pl.col("kind") == "switch")
-    return [n for n, m in zip(eff["name"], eff["models"]) if "bearing" in m.split(", ")]
+    eff = tb.effects("switch")
+    return [n for n, m in zip(eff["name"], eff["models"]) if "bearing" in m.split(",")]
 
 
 FULL = _bearing_effects()
@@ -109,6 +109,40 @@ def _gap_closed(d) -> bool:
     r0 = ((g["value"] - g["model_before"]) / g["sigma"]).to_numpy()
     r1 = ((g["value"] - g["model_after"]) / g["sigma"]).to_numpy()
     return float(np.sqrt(np.mean(r0**2))) > 3.0 and float(np.sqrt(np.mean(r1**2))) < 1.5
+
+
+# ------------------------------------------------------------ registry
+
+
+def test_registry_lists_every_effect_with_bounds_and_a_working_switch():
+    reg = tb.effects()
+    names = set(reg["name"])
+    assert {
+        "ring_centrifugal_expansion",
+        "gyroscopic_moment",
+        "spin_friction",
+        "thermal_expansion_shaft",
+        "thermal_expansion_inner_ring",
+        "thermal_expansion_outer_ring",
+        "thermal_expansion_balls",
+        "thermal_expansion_housing",
+        "temperature_dependent_viscosity",
+        "preload_change_from_axial_growth",
+        "extra_heat_w",
+        "housing_conductance_scale",
+    } <= names
+    assert reg["name"].n_unique() == reg.height
+    for r in reg.iter_rows(named=True):
+        assert r["lower"] <= r["default"] <= r["upper"], r
+        assert r["lower"] <= r["off"] <= r["upper"], r
+        assert r["models"] and set(r["models"].split(",")) <= {"bearing", "spindle", "rotor"}
+    # a term at its off value is the baseline; away from it, it acts
+    cond = pl.DataFrame({"speed_rpm": [12000.0], "axial_n": [AXIAL_N], "radial_n": [0.0]})
+    t0 = _spec().predict(cond)["temperature_c:Tb"][0]
+    for r in tb.effects("term").iter_rows(named=True):
+        off = _spec(**{r["parameter"]: r["off"]}).predict(cond)["temperature_c:Tb"][0]
+        on = _spec(**{r["parameter"]: r["upper"]}).predict(cond)["temperature_c:Tb"][0]
+        assert off == t0 and abs(on - t0) > 0.5, r["name"]
 
 
 # ------------------------------------------------------------ hidden effects

@@ -18,7 +18,7 @@ def b6208():
 
 
 def _effects_without_thermal():
-    return [n for n in tb.effects()["name"].to_list() if n not in THERMAL_EFFECTS]
+    return [n for n in tb.effects("switch")["name"].to_list() if n not in THERMAL_EFFECTS]
 
 
 def test_heat_balance(b6208):

@@ -9,6 +9,8 @@ Results are SI unless the name says otherwise.
 
 from __future__ import annotations
 
+from typing import Optional
+
 from . import _native
 from .bearing import Bearing, BearingSolution, Material, stiffness_curve
 from .config import load_config, seed_config, seed_config_names
@@ -50,20 +52,15 @@ from .thermal import ThermalState, thermal_state
 __version__: str = _native.__version__
 
 
-def effects() -> "polars.DataFrame":  # noqa: F821
-    """The registry of named physical effects: ``name``, ``description``,
-    ``models`` (comma-joined models the effect acts in: ``bearing``,
-    ``spindle``, ``rotor``)."""
-    import polars as pl
+def effects(kind: Optional[str] = None) -> "polars.DataFrame":  # noqa: F821
+    """The effects registry: every physical effect a model can include or
+    leave out, one row each (see :func:`thermobear.diagnosis.effect_registry`
+    for the columns). ``kind="switch"``: the named effects for
+    ``effects=[...]``; ``kind="term"``: the terms with a calibratable input
+    whose null value leaves them out (extra heat, housing conductance ...)."""
+    from .diagnosis import effect_registry
 
-    rows = _native.effects()
-    return pl.DataFrame(
-        {
-            "name": [r[0] for r in rows],
-            "description": [r[1] for r in rows],
-            "models": [",".join(r[2]) for r in rows],
-        }
-    )
+    return effect_registry(kind)
 
 
 from . import plot  # noqa: E402  (plot imports matplotlib lazily)

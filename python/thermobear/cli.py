@@ -34,10 +34,15 @@ def _cmd_presets(args: argparse.Namespace) -> int:
 
 
 def _cmd_effects(args: argparse.Namespace) -> int:
-    from . import _native
+    from .diagnosis import effect_registry
 
-    for name, desc, *_ in _native.effects():
-        print(f"{name:32s} {desc}")
+    for r in effect_registry().iter_rows(named=True):
+        bounds = (
+            "on/off"
+            if r["parameter"] == "on"
+            else (f"{r['parameter']} {r['lower']:g}..{r['upper']:g} {r['unit']}")
+        )
+        print(f"{r['name']:34s} {r['kind']:6s} {r['models']:22s} {bounds:38s} {r['description']}")
     return 0
 
 

@@ -104,6 +104,8 @@ _PARAMETERS = (
      "housing-to-ambient conductance differs from the bare natural-convection cylinder"),
 )  # fmt: skip
 
+#: ``affects`` of an effect that acts only in the spindle or rotor model.
+_NOT_IN_BEARING = "not in the single-bearing model"
 _HOUSING_MATERIALS = ("aluminium", "cast-iron", "shaft-steel")
 _THERMAL_DEFAULTS = {
     "lubricant": "e-drive ATF",
@@ -116,6 +118,53 @@ _THERMAL_DEFAULTS = {
     "extra_heat_w": 0.0,
     "housing_conductance_scale": 1.0,
 }
+
+
+#: Effects that are switches and also have a calibratable coefficient:
+#: name -> (option, unit, lower, upper); bounds as in :data:`_PARAMETERS`.
+_SWITCH_COEFFICIENTS = {"spin_friction": ("spin_friction", "1", 0.0, 0.3)}
+#: Switches that are off in the default models (the rotor's default leaves
+#: the magnetic pull out: its inputs are an assumption about the motor).
+_OFF_BY_DEFAULT = ("unbalanced_magnetic_pull",)
+
+
+def effect_registry(kind: Optional[str] = None) -> "polars.DataFrame":  # noqa: F821
+    """The effects registry (``thermobear.effects()``): one row per physical
+    effect. ``name``; ``kind``: "switch" (a named effect, on when listed in
+    ``effects=[...]``) or "term" (an input whose ``off`` value leaves the
+    term out, e.g. ``extra_heat_w`` = 0); ``models``: the models it acts in
+    (comma-joined: bearing, spindle, rotor); ``parameter``, ``unit``,
+    ``lower``, ``upper``: the calibratable input and its physical bounds
+    ("on", 0-1 for a plain switch); ``default``: its value in the default
+    model; ``off``: the value without the effect; ``description``."""
+    import polars as pl
+
+    from . import _native
+
+    if kind not in (None, "switch", "term"):
+        raise ConfigError(f"invalid kind = {kind!r}: None, 'switch' or 'term'")
+    rows = []
+    for name, desc, models in _native.effects():
+        on = 0.0 if name in _OFF_BY_DEFAULT else 1.0
+        if name in _SWITCH_COEFFICIENTS:
+            opt, unit, lo, hi = _SWITCH_COEFFICIENTS[name]
+            rows.append(
+                (name, "switch", ",".join(models), opt, unit, lo, hi,
+                 float(_THERMAL_DEFAULTS[opt]) * on, 0.0, desc)
+            )  # fmt: skip
+        else:
+            rows.append((name, "switch", ",".join(models), "on", "1", 0.0, 1.0, on, 0.0, desc))
+    for name, opt, unit, lo, hi, _off, role, desc in _PARAMETERS:
+        if role == "effect":
+            null = float(_THERMAL_DEFAULTS[opt])
+            rows.append((name, "term", "bearing", opt, unit, lo, hi, null, null, desc))
+    df = pl.DataFrame(
+        rows,
+        schema=["name", "kind", "models", "parameter", "unit", "lower", "upper", "default",
+                "off", "description"],
+        orient="row",
+    )  # fmt: skip
+    return df if kind is None else df.filter(pl.col("kind") == kind)
 
 
 # --------------------------------------------------------------------------
@@ -352,12 +401,10 @@ def _candidate_list(
     temps = tuple(q for q in QUANTITIES if q.startswith("temperature_c"))
     mech = tuple(q for q in QUANTITIES if not q.startswith("temperature_c"))
     out = []
-    for name, desc, *_ in _native.effects():
+    for name, desc, models in _native.effects():
         if name in base_eff:
             continue
-        affects = (
-            ("rotor vibration only",) if name == "unbalanced_magnetic_pull" else tuple(QUANTITIES)
-        )
+        affects = tuple(QUANTITIES) if "bearing" in models else (_NOT_IN_BEARING,)
         out.append(
             Candidate(
                 name,
@@ -1044,7 +1091,7 @@ def diagnose(
     r0 = (y - pred0) / s
     audit = _audit(df, r0)
     notes, screening, accepted, tie = [], [], [], []
-    not_evaluable = [c.name for c in pool if c.affects == ("rotor vibration only",)]
+    not_evaluable = [c.name for c in pool if c.affects == (_NOT_IN_BEARING,)]
     pool = [c for c in pool if c.name not in not_evaluable]
     if not_evaluable:
         notes.append("not in the single-bearing model: " + ", ".join(not_evaluable))
