@@ -61,7 +61,9 @@ _T_RANGE = (-60.0, 250.0)
 #: the layout of :data:`thermobear.diagnosis.QUANTITIES`. Thermocouples
 #: +-0.5 K; laser-Doppler vibrometer velocity 5 % (the Polytec OFV-505 of
 #: seed B's test; 5 % is our assumption for the whole chain, the paper gives
-#: none); axial growth 0.5 um (capacitive probe, assumed).
+#: none); axial growth 0.5 um (capacitive probe, assumed); operating
+#: preload of the front pair 2 % (a load washer or strain-gauged spacer in
+#: the preload path, assumed).
 SPINDLE_QUANTITIES: dict[str, tuple[str, float, tuple[float, float], float, bool]] = {
     "temperature_c:front_outer": ("front_outer_c", 1.0, _T_RANGE, 0.5, False),
     "temperature_c:rear_outer": ("rear_outer_c", 1.0, _T_RANGE, 0.5, False),
@@ -70,6 +72,7 @@ SPINDLE_QUANTITIES: dict[str, tuple[str, float, tuple[float, float], float, bool
     "temperature_c:front_housing": ("housing_front_c", 1.0, _T_RANGE, 0.5, False),
     "temperature_c:rear_housing": ("housing_rear_c", 1.0, _T_RANGE, 0.5, False),
     "axial_growth_um": ("axial_growth_um", 1.0, (-1e4, 1e4), 0.5, False),
+    "operating_preload_n": ("operating_preload_n", 1.0, (0.0, 1e5), 0.02, True),
     "velocity_rms_mm_s": ("velocity_rms_mm_s", 1.0, (0.0, 1e3), 0.05, True),
 }
 _VIB = "velocity_rms_mm_s"
