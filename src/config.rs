@@ -28,6 +28,7 @@
 //! effects = ["centrifugal_force", "gyroscopic_moment", "ring_centrifugal_expansion"]
 //! extra_heat_w = 0.0               # optional coupled-thermal calibration inputs
 //! housing_conductance_scale = 1.0
+//! churning_oil_fraction = 0.0      # oil volume fraction of the cavity mixture (0..1)
 //! ```
 
 use serde::Deserialize;
@@ -128,6 +129,10 @@ pub struct ModelConfig {
     /// Housing-to-ambient conductance scale (coupled thermal model; see
     /// [`crate::thermal::coupled::CoupledOptions::housing_conductance_scale`]).
     pub housing_conductance_scale: Option<f64>,
+    /// Oil volume fraction of the oil-air mixture in the bearing cavity
+    /// (0..1, dimensionless) for the ball drag heat (coupled thermal model;
+    /// see [`crate::thermal::coupled::CoupledOptions::churning_oil_fraction`]).
+    pub churning_oil_fraction: Option<f64>,
 }
 
 impl SystemConfig {
@@ -182,6 +187,9 @@ impl SystemConfig {
             }
             if let Some(k) = m.housing_conductance_scale {
                 o.housing_conductance_scale = k;
+            }
+            if let Some(x) = m.churning_oil_fraction {
+                o.churning_oil_fraction = x;
             }
         }
         o.validate()?;
@@ -453,5 +461,29 @@ mod tests {
             other => panic!("{other:?}"),
         }
         assert!(SystemConfig::from_toml("[model]\nextra_heat = 1.0\n").is_err());
+    }
+
+    #[test]
+    fn model_churning_oil_fraction_parses_and_is_a_volume_fraction() {
+        use crate::thermal::coupled::CoupledOptions;
+        let with = |body: &str| SystemConfig::from_toml(&format!("[model]\n{body}\n")).unwrap();
+        let o = with("churning_oil_fraction = 0.02")
+            .coupled_options(CoupledOptions::default())
+            .unwrap();
+        assert_eq!(o.churning_oil_fraction, 0.02);
+        assert_eq!(
+            CoupledOptions {
+                churning_oil_fraction: 0.0,
+                ..o
+            },
+            CoupledOptions::default()
+        );
+        // A fraction outside [0, 1] names its key.
+        for bad in ["-0.1", "1.2"] {
+            match with(&format!("churning_oil_fraction = {bad}")).coupled_options(CoupledOptions::default()) {
+                Err(Error::Config { field, .. }) => assert_eq!(field, "churning_oil_fraction"),
+                other => panic!("{bad}: {other:?}"),
+            }
+        }
     }
 }

@@ -369,6 +369,7 @@ def thermal_state(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
+    churning_oil_fraction: float = 0.0,
 ) -> dict[str, Any]: ...
 def thermal_stiffness_curve(
     bearing: Bearing,
@@ -386,6 +387,7 @@ def thermal_stiffness_curve(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
+    churning_oil_fraction: float = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
 def seed_a_network_links(

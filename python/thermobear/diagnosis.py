@@ -117,6 +117,7 @@ _THERMAL_DEFAULTS = {
     "raceway_control": "outer",
     "extra_heat_w": 0.0,
     "housing_conductance_scale": 1.0,
+    "churning_oil_fraction": 0.0,
 }
 
 
@@ -1299,7 +1300,7 @@ def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, d
     opts = {}
     if "raceway_control" in mdl:
         opts["raceway_control"] = mdl["raceway_control"]
-    for key in ("extra_heat_w", "housing_conductance_scale"):
+    for key in ("extra_heat_w", "housing_conductance_scale", "churning_oil_fraction"):
         if key in mdl:
             opts[key] = float(mdl[key])
     spec = BearingModelSpec(Bearing.from_toml(text), effects=mdl.get("effects"), **opts)

@@ -62,7 +62,7 @@ class ThermalState:
     @property
     def heat(self) -> "polars.DataFrame":  # noqa: F821
         """Heat by mechanism: ``source`` (load, viscous, inner_spin,
-        outer_spin, extra), ``heat_w``."""
+        outer_spin, extra, churning), ``heat_w``."""
         import polars as pl
 
         return pl.DataFrame(
@@ -93,6 +93,12 @@ class ThermalState:
     @property
     def total_heat_w(self) -> float:
         return float(self.raw["total_heat_w"])
+
+    @property
+    def churning_w(self) -> float:
+        """Ball drag ("churning") heat in the oil-air mixture [W] (0 unless
+        ``churning_oil_fraction`` > 0)."""
+        return float(self.raw["churning_w"])
 
     @property
     def deformations(self) -> dict[str, float]:
@@ -142,6 +148,7 @@ def _model_kwargs(
     misalignment_rad: Optional[float],
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
+    churning_oil_fraction: float = 0.0,
 ) -> dict:
     return {
         "lubricant": str(lubricant),
@@ -154,6 +161,7 @@ def _model_kwargs(
         "misalignment_rad": None if misalignment_rad is None else float(misalignment_rad),
         "extra_heat_w": float(extra_heat_w),
         "housing_conductance_scale": float(housing_conductance_scale),
+        "churning_oil_fraction": float(churning_oil_fraction),
     }
 
 
@@ -174,6 +182,7 @@ def thermal_state(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
+    churning_oil_fraction: float = 0.0,
     **kwargs: Any,
 ) -> Any:
     """Coupled thermal steady state at ``speed_rpm`` under ``axial_n``
@@ -188,7 +197,13 @@ def thermal_state(
     friction, e.g. from a magnetic pull load, split like rolling heat
     1/4 : 1/2 : 1/4 to inner ring, balls, outer ring) and
     ``housing_conductance_scale`` (> 0, default 1; scales the housing-to-
-    ambient convection link). The defaults reproduce the baseline. Returns a
+    ambient convection link) and ``churning_oil_fraction`` (the oil volume
+    fraction X of the oil-air mixture in the bearing cavity: dimensionless,
+    0..1, default 0 = off; adds the ball drag heat
+    Z (pi/64) C_D X rho_oil D^2 dm^3 omega_c^3, C_D = 0.47, at the solved
+    cage speed omega_c, which grows like speed^3; split like rolling heat;
+    reported as ``churning_w`` and the ``churning`` row of
+    :attr:`ThermalState.heat`). The defaults reproduce the baseline. Returns a
     :class:`ThermalState`. Raises ``ThermalRunawayError`` when a node passes
     the lubricant's highest temperature or heat, temperatures and contact
     loads grow together, ``ConvergenceError`` when the fixed point stalls.
@@ -228,6 +243,7 @@ def thermal_state(
             misalignment_rad,
             extra_heat_w,
             housing_conductance_scale,
+            churning_oil_fraction,
         ),
     )
     return ThermalState(raw)
@@ -250,6 +266,7 @@ def thermal_stiffness_curve(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
+    churning_oil_fraction: float = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> "polars.DataFrame":  # noqa: F821
     """The coupled state at every speed (parallel, deterministic): the
@@ -257,7 +274,9 @@ def thermal_stiffness_curve(
     ``shaft/inner_ring/ball/outer_ring/housing_temperature_c``, ``heat_w``
     (and ``load_/viscous_/spin_heat_w``), ``radial_thermal_offset_um``,
     ``axial_thermal_offset_um``, ``ball_growth_um``, ``extra_heat_w``,
-    ``centrifugal_expansion_um``, ``thermal_iterations``."""
+    ``churning_w`` (ball drag heat at ``churning_oil_fraction``, a volume
+    fraction 0..1; see :func:`thermal_state`), ``centrifugal_expansion_um``,
+    ``thermal_iterations``."""
     import polars as pl
 
     from .errors import ConfigError
@@ -283,6 +302,7 @@ def thermal_stiffness_curve(
             misalignment_rad,
             extra_heat_w,
             housing_conductance_scale,
+            churning_oil_fraction,
         ),
     )
     df = pl.DataFrame({k: np.asarray(v) for k, v in cols.items()})

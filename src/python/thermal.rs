@@ -29,6 +29,7 @@ struct Settings {
     misalignment_rad: Option<f64>,
     extra_heat_w: f64,
     housing_conductance_scale: f64,
+    churning_oil_fraction: f64,
 }
 
 impl Settings {
@@ -49,6 +50,7 @@ impl Settings {
             spin_friction: self.spin_friction,
             extra_heat_w: self.extra_heat_w,
             housing_conductance_scale: self.housing_conductance_scale,
+            churning_oil_fraction: self.churning_oil_fraction,
             ..CoupledOptions::default()
         };
         CoupledBearing::new(bearing, p, mounting, options)
@@ -60,7 +62,10 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
     d.set_item("node", s.node_names.clone())?;
     d.set_item("temperature_c", s.temperatures_c.clone().into_pyarray(py))?;
     let h = &s.heat;
-    d.set_item("source", vec!["load", "viscous", "inner_spin", "outer_spin", "extra"])?;
+    d.set_item(
+        "source",
+        vec!["load", "viscous", "inner_spin", "outer_spin", "extra", "churning"],
+    )?;
     d.set_item(
         "heat_w",
         vec![
@@ -69,6 +74,7 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
             h.heat.inner_spin_w,
             h.heat.outer_spin_w,
             h.extra_w,
+            h.churning_w,
         ]
         .into_pyarray(py),
     )?;
@@ -119,12 +125,15 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
     d.set_item("load_moment_nmm", h.load_moment_n_m * 1e3)?;
     d.set_item("viscous_moment_nmm", h.viscous_moment_n_m * 1e3)?;
     d.set_item("total_heat_w", h.heat.total_w())?;
+    d.set_item("churning_w", h.churning_w)?;
+    d.set_item("cage_speed_rad_s", h.cage_speed_rad_s)?;
+    d.set_item("oil_density_kg_m3", h.oil_density_kg_m3)?;
     Ok(d)
 }
 
 /// Coupled thermal steady state of one bearing in the seed A network.
 #[pyfunction]
-#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0))]
+#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, churning_oil_fraction=0.0))]
 #[allow(clippy::too_many_arguments)]
 pub fn thermal_state<'py>(
     py: Python<'py>,
@@ -143,6 +152,7 @@ pub fn thermal_state<'py>(
     misalignment_rad: Option<f64>,
     extra_heat_w: f64,
     housing_conductance_scale: f64,
+    churning_oil_fraction: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let settings = Settings {
         effects,
@@ -156,6 +166,7 @@ pub fn thermal_state<'py>(
         misalignment_rad,
         extra_heat_w,
         housing_conductance_scale,
+        churning_oil_fraction,
     };
     let b = &bearing.inner;
     let (c, s) = py
@@ -170,7 +181,7 @@ pub fn thermal_state<'py>(
 
 /// Thermal stiffness curve: the coupled state at every speed, in parallel.
 #[pyfunction]
-#[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, progress=None))]
+#[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, churning_oil_fraction=0.0, progress=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn thermal_stiffness_curve<'py>(
     py: Python<'py>,
@@ -189,6 +200,7 @@ pub fn thermal_stiffness_curve<'py>(
     misalignment_rad: Option<f64>,
     extra_heat_w: f64,
     housing_conductance_scale: f64,
+    churning_oil_fraction: f64,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let speeds = speeds_rpm.as_slice()?.to_vec();
@@ -204,6 +216,7 @@ pub fn thermal_stiffness_curve<'py>(
         misalignment_rad,
         extra_heat_w,
         housing_conductance_scale,
+        churning_oil_fraction,
     };
     let c = settings.build(&bearing.inner).py_err()?;
     let results = chunked_map(py, &speeds, default_chunk(speeds.len()), progress.as_ref(), |&n| {
@@ -231,6 +244,7 @@ pub fn thermal_stiffness_curve<'py>(
     d.set_item("load_heat_w", col(&|s| s.heat.load_w).into_pyarray(py))?;
     d.set_item("viscous_heat_w", col(&|s| s.heat.viscous_w).into_pyarray(py))?;
     d.set_item("extra_heat_w", col(&|s| s.heat.extra_w).into_pyarray(py))?;
+    d.set_item("churning_w", col(&|s| s.heat.churning_w).into_pyarray(py))?;
     d.set_item(
         "spin_heat_w",
         col(&|s| s.heat.heat.inner_spin_w + s.heat.heat.outer_spin_w).into_pyarray(py),

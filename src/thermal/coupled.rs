@@ -25,7 +25,11 @@
 //!    `temperature_dependent_viscosity` is on, else at the oil-air supply
 //!    temperature, seed A assumption 3) + per-contact spin heat
 //!    |omega_s| (3/8) mu_s Q a E (`spin_friction`), E by Hamrock-Brewe at
-//!    the operating contact angle;
+//!    the operating contact angle; optionally the ball drag ("churning") in
+//!    the oil-air mixture, Z (pi/64) C_D X rho_oil D^2 dm^3 omega_c^3
+//!    ([`ball_drag_power_w`], Harris & Kotzalas) at the cage speed of the
+//!    solved state and the oil density at the oil temperature of Mv, when
+//!    [`CoupledOptions::churning_oil_fraction`] X > 0;
 //! 5. Burton-Staph split (A-27) -> steady network (Newton, warm start).
 //!
 //! Fixed point: Anderson(1) acceleration of the damped Picard iteration
@@ -46,7 +50,10 @@
 use rayon::prelude::*;
 
 use super::expansion::{thermal_offsets, ComponentRises, Mounting, RingFit, ThermalOffsets};
-use super::heat::{bearing_heat, load_moment_n_m, viscous_moment_n_m, BearingHeat, HeatSplit, SpinContact};
+use super::heat::{
+    ball_drag_power_w, bearing_heat, load_moment_n_m, viscous_moment_n_m, BearingHeat, HeatSplit, SpinContact,
+    SPHERE_DRAG_COEFFICIENT,
+};
 use super::lubricant::Lubricant;
 use super::network::SteadySolver;
 use super::presets::{seed_a_network, BearingNetwork, SeedAParams};
@@ -82,6 +89,14 @@ pub struct CoupledOptions {
     /// split like rolling friction heat (Burton-Staph, A-27: 1/4 inner ring,
     /// 1/2 balls, 1/4 outer ring). Calibration input; default 0.
     pub extra_heat_w: f64,
+    /// Oil volume fraction X of the oil-air mixture in the bearing cavity
+    /// (0..1, dimensionless) for the ball drag ("churning") loss
+    /// Z (pi/64) C_D X rho_oil D^2 dm^3 omega_c^3 (Harris & Kotzalas; C_D =
+    /// [`SPHERE_DRAG_COEFFICIENT`]). It is dissipated in the lubricant
+    /// between the rings like the Palmgren viscous loss Mv, so it is split
+    /// like rolling heat (A-27: 1/4 inner ring, 1/2 balls, 1/4 outer ring).
+    /// Calibration input; default 0 (off: seed A's heat, A-23).
+    pub churning_oil_fraction: f64,
     /// Scale on the housing-to-ambient convection conductance (link R_h-a,
     /// natural convection h = C dT^0.25 scaled through C): a housing that
     /// sheds heat better (fins, air flow, conduction into the machine) or
@@ -102,6 +117,7 @@ impl Default for CoupledOptions {
             spin_friction: 0.06,
             reference_temperature_c: None,
             extra_heat_w: 0.0,
+            churning_oil_fraction: 0.0,
             housing_conductance_scale: 1.0,
             tolerance_k: 1e-6,
             tolerance_m: 1e-12,
@@ -122,6 +138,8 @@ impl CoupledOptions {
         // seed A's highest is ~1 kW); conductance scale 0.01..100 (two
         // decades either way of the bare natural-convection cylinder).
         in_range("extra_heat_w", self.extra_heat_w, 0.0, 1e4)?;
+        // A volume fraction: 0 (dry air) .. 1 (flooded cavity).
+        in_range("churning_oil_fraction", self.churning_oil_fraction, 0.0, 1.0)?;
         positive("housing_conductance_scale", self.housing_conductance_scale)?;
         in_range("housing_conductance_scale", self.housing_conductance_scale, 0.01, 100.0)?;
         positive("tolerance_k", self.tolerance_k)?;
@@ -164,8 +182,15 @@ pub struct HeatReport {
     pub viscosity_cst: f64,
     /// Extra heat of [`CoupledOptions::extra_heat_w`] [W].
     pub extra_w: f64,
-    /// All mechanisms (rolling = load + viscous + extra, inner and outer
-    /// spin) [W].
+    /// Ball drag ("churning") heat at [`CoupledOptions::churning_oil_fraction`] [W].
+    pub churning_w: f64,
+    /// Cage speed used by the drag heat: the mean orbit speed of the balls
+    /// of the solved state [rad/s].
+    pub cage_speed_rad_s: f64,
+    /// Oil density at the oil temperature [kg/m^3].
+    pub oil_density_kg_m3: f64,
+    /// All mechanisms (rolling = load + viscous + extra + churning, inner
+    /// and outer spin) [W].
     pub heat: BearingHeat,
     /// Burton-Staph split (A-27) [W].
     pub split: HeatSplit,
@@ -182,6 +207,14 @@ pub fn mean_inner_contact_angle_rad(bearing: &Bearing, state: &BearingState) -> 
     } else {
         bearing.geometry.free_contact_angle_rad
     }
+}
+
+/// Cage speed of a solved state: the mean orbit speed of its balls
+/// [rad/s]. The quasi-static model gives each ball its own orbit speed
+/// (equal under a pure axial load); the cage makes them share one.
+pub fn cage_speed_rad_s(state: &BearingState) -> f64 {
+    let n = state.balls.len().max(1) as f64;
+    state.balls.iter().map(|b| b.orbit_speed_rad_s).sum::<f64>() / n
 }
 
 /// Complete elliptic integral E of a contact at `alpha` (Hamrock-Brewe).
@@ -247,14 +280,29 @@ pub fn operating_heat(
         (Vec::new(), Vec::new())
     };
     let mut heat = bearing_heat(omega, m1, mv, options.spin_friction, &ci, &co)?;
-    // The extra heat is split like rolling friction heat.
-    heat.rolling_w += options.extra_heat_w;
+    let cage = cage_speed_rad_s(state);
+    let rho = lubricant.density_kg_m3(oil_c)?;
+    let churning_w = ball_drag_power_w(
+        g.ball_count,
+        g.ball_diameter_m,
+        g.pitch_diameter_m,
+        cage,
+        rho,
+        options.churning_oil_fraction,
+        SPHERE_DRAG_COEFFICIENT,
+    )?;
+    // The extra heat and the ball drag heat are split like rolling
+    // friction heat.
+    heat.rolling_w += options.extra_heat_w + churning_w;
     Ok(HeatReport {
         load_moment_n_m: m1,
         viscous_moment_n_m: mv,
         load_w: omega * m1,
         viscous_w: omega * mv,
         extra_w: options.extra_heat_w,
+        churning_w,
+        cage_speed_rad_s: cage,
+        oil_density_kg_m3: rho,
         oil_temperature_c: oil_c,
         viscosity_cst: nu,
         heat,
@@ -893,6 +941,27 @@ mod tests {
             ),
             (
                 CoupledOptions {
+                    churning_oil_fraction: -0.01,
+                    ..CoupledOptions::default()
+                },
+                "churning_oil_fraction",
+            ),
+            (
+                CoupledOptions {
+                    churning_oil_fraction: 1.5,
+                    ..CoupledOptions::default()
+                },
+                "churning_oil_fraction",
+            ),
+            (
+                CoupledOptions {
+                    churning_oil_fraction: f64::NAN,
+                    ..CoupledOptions::default()
+                },
+                "churning_oil_fraction",
+            ),
+            (
+                CoupledOptions {
                     housing_conductance_scale: 0.0,
                     ..CoupledOptions::default()
                 },
@@ -911,5 +980,90 @@ mod tests {
                 other => panic!("{field}: expected a config error, got {other:?}"),
             }
         }
+    }
+
+    fn with_churning(x: f64) -> CoupledBearing {
+        let b = Bearing::preset("6208").unwrap();
+        let o = CoupledOptions {
+            churning_oil_fraction: x,
+            ..CoupledOptions::default()
+        };
+        CoupledBearing::seed_a(&b, o).unwrap()
+    }
+
+    /// Ball drag closed form, written out independently of
+    /// `ball_drag_power_w`: Z (pi/64) C_D X rho D^2 dm^3 omega_c^3 with the
+    /// lubricant's density law rho15 (1 - beta (T - 15)).
+    fn drag_by_hand(c: &CoupledBearing, s: &ThermalState, x: f64) -> f64 {
+        let g = &c.model().bearing().geometry;
+        let lub = &c.params().lubricant;
+        let rho = lub.density_15c_kg_m3 * (1.0 - lub.density_expansion_per_k * (s.heat.oil_temperature_c - 15.0));
+        let wc = s.bearing.balls.iter().map(|b| b.orbit_speed_rad_s).sum::<f64>() / s.bearing.balls.len() as f64;
+        g.ball_count as f64
+            * std::f64::consts::PI
+            * 0.47
+            * x
+            * rho
+            * g.ball_diameter_m.powi(2)
+            * g.pitch_diameter_m.powi(3)
+            * wc.powi(3)
+            / 64.0
+    }
+
+    #[test]
+    fn churning_heat_is_ball_drag_at_the_solved_cage_speed_and_leaves_through_the_boundaries() {
+        let x = 0.05;
+        let base = seed_a(EffectSet::all()).solve(12_000.0, FA, FR).unwrap();
+        let c = with_churning(x);
+        let s = c.solve(12_000.0, FA, FR).unwrap();
+        assert_eq!(base.heat.churning_w, 0.0);
+        let p = drag_by_hand(&c, &s, x);
+        assert!(
+            p > 1.0 && (s.heat.churning_w - p).abs() < 1e-9 * p,
+            "{} vs {p}",
+            s.heat.churning_w
+        );
+        // Total heat at the converged state = the baseline mechanisms at
+        // that state + the drag power (A-23 + P), and it all leaves
+        // through the boundaries.
+        let own = s.heat.load_w + s.heat.viscous_w + s.heat.heat.inner_spin_w + s.heat.heat.outer_spin_w;
+        let h = s.heat.heat.total_w();
+        assert!((h - own - p).abs() < 1e-9 * h, "{h} vs {own} + {p}");
+        let out: f64 = s.boundary_flows_w.iter().map(|(_, q)| q).sum();
+        assert!((out - h).abs() < 1e-6 * h, "{out} vs {h}");
+        // Split like rolling heat: P/4, P/2, P/4 on top of the friction split.
+        let fr = BearingHeat {
+            rolling_w: s.heat.load_w + s.heat.viscous_w,
+            ..s.heat.heat
+        }
+        .split();
+        assert!((s.heat.split.inner_ring_w - fr.inner_ring_w - 0.25 * p).abs() < 1e-9 * h);
+        assert!((s.heat.split.balls_w - fr.balls_w - 0.5 * p).abs() < 1e-9 * h);
+        assert!((s.heat.split.outer_ring_w - fr.outer_ring_w - 0.25 * p).abs() < 1e-9 * h);
+        for n in ["Ti", "Tb", "To", "Th"] {
+            assert!(s.temperature_c(n).unwrap() > base.temperature_c(n).unwrap(), "{n}");
+        }
+    }
+
+    #[test]
+    fn churning_grows_with_speed_faster_than_the_viscous_loss() {
+        let x = 0.02;
+        let c = with_churning(x);
+        let (lo, hi) = (c.solve(7_000.0, FA, FR).unwrap(), c.solve(14_000.0, FA, FR).unwrap());
+        // Exactly (omega_c ratio)^3 times the density ratio (drag law).
+        let ratio = hi.heat.churning_w / lo.heat.churning_w;
+        let kin = (hi.heat.cage_speed_rad_s / lo.heat.cage_speed_rad_s).powi(3) * hi.heat.oil_density_kg_m3
+            / lo.heat.oil_density_kg_m3;
+        assert!((ratio - kin).abs() < 1e-9 * kin, "{ratio} vs {kin}");
+        // About 8 for twice the speed (cage speed ~ proportional to shaft
+        // speed); Palmgren's omega Mv grows at most like 2^(5/3) = 3.17
+        // (less as the oil warms and thins).
+        let viscous = hi.heat.viscous_w / lo.heat.viscous_w;
+        assert!(
+            ratio > 7.0 && viscous < 2f64.powf(5.0 / 3.0) && ratio > 2.0 * viscous,
+            "{ratio} {viscous}"
+        );
+        let share = |s: &ThermalState| s.heat.churning_w / s.heat.heat.total_w();
+        assert!(share(&hi) > share(&lo));
     }
 }
