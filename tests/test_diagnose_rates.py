@@ -130,6 +130,7 @@ def test_registry_lists_every_effect_with_bounds_and_a_working_switch():
         "preload_change_from_axial_growth",
         "extra_heat_w",
         "housing_conductance_scale",
+        "churning_oil_fraction",
     } <= names
     assert reg["name"].n_unique() == reg.height
     for r in reg.iter_rows(named=True):
@@ -180,6 +181,7 @@ def test_hidden_switch_effect_named_at_high_snr_and_gap_closes(effect):
 HIDDEN_TERMS = [
     ("extra_heat_w", 15.0),  # W at the bearing, e.g. magnetic-pull friction
     ("housing_conductance_scale", 3.0),  # a ventilated housing
+    ("churning_oil_fraction", 0.01),  # ball drag in a 1 % oil-air mixture (~17 W at 18,000 rpm)
 ]
 
 

@@ -87,11 +87,15 @@ _NODE_NAMES = {
 # 0.1-10 (a decade either way of natural convection from the bare cylinder:
 # an enclosed, insulated housing below, a finned or ventilated one or one
 # conducting into the machine frame above; natural and slow forced air
-# convection coefficients differ by about a decade, 5-10 vs 25-100 W/m^2K).
+# convection coefficients differ by about a decade, 5-10 vs 25-100 W/m^2K);
+# churning oil volume fraction X of the cavity mixture 0-5 % (0: dry air;
+# our assumed upper end for a jet-lubricated, partly flooded cavity -- an oil
+# bath is the f0 range above; at 5 % a 7008C at 18,000 rpm dissipates
+# ~90 W of ball drag, about half its total friction heat).
 _PARAMETERS = (
     # (name, option, unit, lower, upper, offset?, role, description)
     ("lubrication_factor_f0", "lubrication_factor_f0", "1", 0.5, 6.0, False, "calibration",
-     "viscous/churning loss scale (Palmgren f0)"),
+     "viscous friction moment scale (Palmgren f0)"),
     ("spin_friction_coefficient", "spin_friction", "1", 0.0, 0.3, False, "calibration",
      "spin friction coefficient mu_s (needs the spin_friction effect on)"),
     ("oil_air_temperature_offset_k", "oil_air_temperature_c", "K", -10.0, 20.0, True,
@@ -102,6 +106,8 @@ _PARAMETERS = (
      "extra heat at the bearing (e.g. magnetic-pull friction), split like rolling heat"),
     ("housing_conductance_scale", "housing_conductance_scale", "1", 0.1, 10.0, False, "effect",
      "housing-to-ambient conductance differs from the bare natural-convection cylinder"),
+    ("churning_oil_fraction", "churning_oil_fraction", "1", 0.0, 0.05, False, "effect",
+     "churning: drag of the balls in the oil-air mixture, ~ speed^3 (oil volume fraction X)"),
 )  # fmt: skip
 
 #: ``affects`` of an effect that acts only in the spindle or rotor model.

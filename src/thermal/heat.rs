@@ -42,10 +42,10 @@
 //!   rho_eff = X rho_oil (X the oil volume fraction of the cavity air), so
 //!   `F_D = 0.5 rho_eff C_D (pi D^2 / 4) v^2 = (pi/32) C_D rho_eff D^2 (dm omega_c)^2`
 //!   and the bearing dissipates `P = Z F_D v = Z (pi/64) C_D X rho_oil D^2 dm^3 omega_c^3`,
-//!   see [`ball_drag_power_w`]. Harris' own form carries an empirical
-//!   speed exponent 1.95 instead of 2; we keep the plain drag law (exponent
-//!   2, dimensionally consistent; the difference is absorbed by X). Not part
-//!   of seed A's heat: a calibration term, off unless X > 0.
+//!   see [`ball_drag_power_w`]. We use the plain quadratic drag law
+//!   (dimensionally consistent; an empirical correction of the speed
+//!   exponent would be absorbed by X). Not part of seed A's heat: a
+//!   calibration term, off unless X > 0.
 
 use crate::bearing::{BearingGeometry, BearingType};
 use crate::error::{finite, in_range, non_negative, positive, Error, Result};
