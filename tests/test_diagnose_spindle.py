@@ -216,3 +216,28 @@ def test_diagnose_accepts_a_spindle_model_directly():
     a = tb.diagnose(model, data, holdout=None)
     b = tb.diagnose_spindle(model, data, holdout=None)
     assert a.verdict == b.verdict
+
+
+def test_cli_diagnoses_seed_b_measurements_from_a_spindle_preset(tmp_path, capsys):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from importlib.resources import files
+
+    from thermobear.cli import main
+
+    csv = files("thermobear") / "configs" / "seed_b_measurements.csv"
+    out = tmp_path / "out"
+    args = ["diagnose", str(csv), "--spindle", "seed-ceramic-spindle", "--out", str(out)]
+    assert main(args + ["--without", "thermal_displacement"]) == 0
+    text = capsys.readouterr().out
+    assert "verdict:" in text and (out / "diagnosis_gap.csv").exists()
+    # the same as the Python call with the same baseline
+    full = tb.SpindleModelSpec(tb.Spindle.preset("seed-ceramic-spindle"))
+    base = tb.SpindleModelSpec(
+        full.spindle, effects=[e for e in full.effects if e not in THERMAL_DISPLACEMENT_EFFECTS]
+    )
+    d = tb.diagnose(base, tb.seed_b_measurements(), holdout=None)
+    assert d.verdict in text
+    assert main(args + ["--without", "no_such_effect"]) == 2
+    assert main(["diagnose", str(csv), "--spindle", "no-such-spindle"]) == 2

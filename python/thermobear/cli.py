@@ -25,9 +25,10 @@ def _cmd_solve(args: argparse.Namespace) -> int:
 
 
 def _cmd_presets(args: argparse.Namespace) -> int:
-    from . import Bearing, Material, seed_config_names
+    from . import Bearing, Material, Spindle, seed_config_names
 
     print("bearings: " + ", ".join(Bearing.preset_names()))
+    print("spindles: " + ", ".join(Spindle.preset_names()))
     print("materials: " + ", ".join(Material.preset_names()))
     print("seed configurations: " + ", ".join(seed_config_names()))
     return 0
@@ -50,7 +51,13 @@ def _cmd_diagnose(args: argparse.Namespace) -> int:
     from .diagnosis import diagnose_files
 
     out = Path(args.out) if args.out else None
-    d, files = diagnose_files(Path(args.measured), Path(args.model), out)
+    d, files = diagnose_files(
+        Path(args.measured),
+        Path(args.model) if args.model else None,
+        out,
+        spindle=args.spindle,
+        without=args.without or (),
+    )
     print(d.summary())
     if out is not None:
         print(f"thermobear diagnose: {len(files)} files written to {out.resolve()}")
@@ -79,7 +86,18 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     )
     g = sub.add_parser("diagnose", help="name the effect missing between model and measurements")
     g.add_argument("measured", help="tidy measurement table (.csv or .parquet)")
-    g.add_argument("--model", required=True, help="system description (.toml) of the baseline")
+    base = g.add_mutually_exclusive_group(required=True)
+    base.add_argument("--model", help="system description (.toml) of a bearing baseline")
+    base.add_argument(
+        "--spindle", help="spindle preset of the baseline (thermobear presets lists them)"
+    )
+    g.add_argument(
+        "--without",
+        action="append",
+        metavar="EFFECT",
+        help="switch an effect off in the baseline (repeatable; thermobear effects lists them; "
+        "'thermal_displacement' = the five thermal expansions of a spindle)",
+    )
     g.add_argument("--out", default=None, help="folder for tables and figures")
     g.set_defaults(func=_cmd_diagnose)
     args = p.parse_args(argv)

@@ -1314,24 +1314,54 @@ def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, d
 
 
 def diagnose_files(
-    measured: Union[str, Path], system: Union[str, Path], out: Optional[Path] = None
+    measured: Union[str, Path],
+    system: Union[str, Path, None] = None,
+    out: Optional[Path] = None,
+    *,
+    spindle: Optional[str] = None,
+    without: Sequence[str] = (),
 ) -> tuple[Diagnosis, list[Path]]:
-    """``thermobear diagnose``: diagnose a measurement file against a system
-    description; write tables (gap, audit, screening, points) and figures
-    into ``out`` when given."""
+    """``thermobear diagnose``: diagnose a measurement file (CSV lines
+    starting with ``#`` are comments) against a baseline -- a bearing system
+    description (``system``, TOML) or a spindle preset (``spindle``, e.g.
+    "seed-ceramic-spindle") -- with the effects in ``without`` (names, or
+    "thermal_displacement" for a spindle) switched off; write tables (gap,
+    audit, screening, points) and figures into ``out`` when given."""
     import polars as pl
 
-    spec, op = model_from_toml(system)
+    if (system is None) == (spindle is None):
+        raise ConfigError("invalid baseline: give a system description (--model) or --spindle")
     p = Path(measured)
     try:
-        df = pl.read_parquet(p) if p.suffix == ".parquet" else pl.read_csv(p)
+        df = pl.read_parquet(p) if p.suffix == ".parquet" else pl.read_csv(p, comment_prefix="#")
     except Exception as e:  # noqa: BLE001
         raise DataError(f"invalid measurements = {p}: cannot read: {e}") from None
-    if "axial_n" not in df.columns and "preload_n" not in df.columns:
-        df = df.with_columns(pl.lit(float(op.get("axial_n", 0.0))).alias("axial_n"))
-    if "radial_n" not in df.columns:
-        df = df.with_columns(pl.lit(float(op.get("radial_n", 0.0))).alias("radial_n"))
-    d = diagnose(spec, df)
+    if spindle is not None:
+        from .diagnosis_spindle import SpindleModelSpec
+        from .spindle import Spindle
+
+        full = SpindleModelSpec(Spindle.preset(spindle))
+        drop = set(full._expand(list(without))) if without else set()
+        spec: Any = SpindleModelSpec(
+            full.spindle, effects=[e for e in full.effects if e not in drop]
+        )
+    else:
+        spec, op = model_from_toml(system)
+        for w in without:
+            if w not in spec.effects:
+                raise ConfigError(
+                    f"invalid without = {w!r}: not an effect of the baseline "
+                    f"({', '.join(spec.effects)})"
+                )
+        spec = BearingModelSpec(
+            spec.bearing, effects=[e for e in spec.effects if e not in set(without)], **spec.options
+        )
+        if "axial_n" not in df.columns and "preload_n" not in df.columns:
+            df = df.with_columns(pl.lit(float(op.get("axial_n", 0.0))).alias("axial_n"))
+        if "radial_n" not in df.columns:
+            df = df.with_columns(pl.lit(float(op.get("radial_n", 0.0))).alias("radial_n"))
+    n_speeds = df["speed_rpm"].n_unique() if "speed_rpm" in df.columns else 0
+    d = diagnose(spec, df, holdout="highest_speeds" if n_speeds >= 3 else None)
     files: list[Path] = []
     if out is not None:
         from . import plot
