@@ -106,8 +106,6 @@ class Bearing:
         effects: Optional[Sequence[str]] = None,
         raceway_control: str = "outer",
         misalignment_rad: Optional[float] = 0.0,
-        extra_heat_w: float = 0.0,
-        housing_conductance_scale: float = 1.0,
     ) -> dict: ...
     def ring_forces(
         self,
@@ -128,8 +126,6 @@ def stiffness_curve(
     effects: Optional[Sequence[str]] = None,
     raceway_control: str = "outer",
     misalignment_rad: Optional[float] = 0.0,
-    extra_heat_w: float = 0.0,
-    housing_conductance_scale: float = 1.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
 
