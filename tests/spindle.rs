@@ -225,3 +225,95 @@ fn spin_friction_switch_removes_only_the_spin_heat() {
         assert!(x < y - 0.5, "{node}: {x} vs {y}");
     }
 }
+
+/// The seed B spindle with the unbalanced magnetic pull switched on or off.
+fn with_ump(sp: &Spindle, on: bool) -> Spindle {
+    use thermobear::effects::Effect;
+    let mut cfg = sp.config.clone();
+    cfg.effects = if on {
+        cfg.effects.with(Effect::UnbalancedMagneticPull)
+    } else {
+        cfg.effects.without(Effect::UnbalancedMagneticPull)
+    };
+    Spindle::new(cfg).unwrap()
+}
+
+/// Sum of the radial loads [Fx, Fy] the two bearings of a pair carry (both
+/// frames share x and y, pair.rs) [N].
+fn pair_radial_n(p: &PairState) -> [f64; 2] {
+    let (a, b) = (&p.bearings[0].applied_load_n_nm, &p.bearings[1].applied_load_n_nm);
+    [a[0] + b[0], a[1] + b[1]]
+}
+
+#[test]
+fn magnetic_pull_loads_the_pairs_in_static_equilibrium_and_heats_the_front_pair() {
+    let nose_n = 200.0;
+    let base = Spindle::seed_b("hybrid").unwrap().with_radial_load(nose_n).unwrap();
+    let (on, off) = (with_ump(&base, true), with_ump(&base, false));
+    let f = on.magnetic_pull_n();
+    assert!(f > 0.0 && off.magnetic_pull_n() == 0.0);
+    let (a, b) = (on.steady_state(12_000.0).unwrap(), off.steady_state(12_000.0).unwrap());
+    // Statics of the rigid shaft from the solved ball loads: the pairs carry
+    // the pull (y) and the nose load (x) between them ...
+    let (fr, rr) = (pair_radial_n(&a.front), pair_radial_n(&a.rear));
+    let tol = 1e-6 * base.front.preload.force_n();
+    assert!((fr[1] + rr[1] - f).abs() < tol, "{fr:?} {rr:?} {f}");
+    assert!((fr[0] + rr[0] - nose_n).abs() < tol, "{fr:?} {rr:?}");
+    // ... and the moments about the front pair centre balance: the pull at
+    // the core (c behind the front pair), the nose load a in front of it.
+    let p = &on.config.params;
+    let l = p.front_span_m + p.rear_span_m;
+    let c = on.config.magnetic_pull.as_ref().unwrap().core_from_front_pair_m;
+    assert!((rr[1] * l - f * c).abs() < tol * l, "{} vs {}", rr[1] * l, f * c);
+    assert!((rr[0] * l + nose_n * p.nose_length_m).abs() < tol * l);
+    // The extra radial load raises the front pair's friction heat and
+    // its temperatures.
+    let front_w = |s: &SpindleState| s.bearing_heat[..2].iter().map(|h| h.heat.total_w()).sum::<f64>();
+    assert!(front_w(&a) > front_w(&b), "{} vs {}", front_w(&a), front_w(&b));
+    for node in ["front_inner", "front_balls", "front_outer"] {
+        let (x, y) = (a.temperatures.get(node).unwrap(), b.temperatures.get(node).unwrap());
+        assert!(x > y, "{node}: {x} vs {y}");
+    }
+    // Still a steady state: all heat leaves through the boundaries.
+    assert!((a.boundary_flow_w - a.total_heat_w).abs() < 1e-6 * a.total_heat_w);
+}
+
+#[test]
+fn magnetic_pull_agrees_with_the_rotor_model_and_vanishes_without_flux() {
+    use thermobear::effects::Effect;
+    use thermobear::rotor::spindle_vibration::{RowMaterial, SpindleVibration, SpindleVibrationConfig};
+    let sp = Spindle::seed_b("hybrid").unwrap();
+    // Default: UMP off in both models.
+    let mut vc = SpindleVibrationConfig::seed(RowMaterial::Hybrid);
+    assert_eq!(sp.config.effects, vc.effects);
+    assert!(!sp.config.effects.has(Effect::UnbalancedMagneticPull));
+    // With the effect on, the rotor model's static pull is the thermal one.
+    vc.effects = vc.effects.with(Effect::UnbalancedMagneticPull);
+    let rotor = SpindleVibration::new(vc).unwrap();
+    let spec = rotor.rotor().spec();
+    let rotor_pull = spec.magnetic_pull.as_ref().unwrap();
+    let on = with_ump(&sp, true);
+    assert!((on.magnetic_pull_n() - rotor_pull.static_force_n()).abs() < 1e-9 * rotor_pull.static_force_n());
+    // Same place between the pair centres (fraction of the span) in both models.
+    let z: Vec<f64> = spec.bearings.iter().map(|b| b.position_m).collect();
+    let (front, rear) = (0.5 * (z[0] + z[1]), 0.5 * (z[2] + z[3]));
+    let p = &on.config.params;
+    let c = on.config.magnetic_pull.as_ref().unwrap().core_from_front_pair_m;
+    let frac = (rotor_pull.position_m - front) / (rear - front);
+    assert!((c / (p.front_span_m + p.rear_span_m) - frac).abs() < 1e-12, "{frac}");
+    // No flux, no pull: identical to the effect off.
+    let mut cfg = on.config.clone();
+    cfg.magnetic_pull.as_mut().unwrap().pull.flux_density_t = 0.0;
+    let zero = Spindle::new(cfg).unwrap();
+    assert_eq!(zero.magnetic_pull_n(), 0.0);
+    let (a, b) = (
+        zero.steady_state(12_000.0).unwrap(),
+        with_ump(&sp, false).steady_state(12_000.0).unwrap(),
+    );
+    assert_eq!(a.temperatures.temperatures_c, b.temperatures.temperatures_c);
+    assert_eq!(a.front, b.front);
+    // The effect without air-gap data is refused.
+    let mut cfg = on.config.clone();
+    cfg.magnetic_pull = None;
+    assert!(matches!(Spindle::new(cfg), Err(Error::Config { .. })));
+}

@@ -120,7 +120,10 @@ class Spindle:
         """Coupled steady state at one speed as a one-row DataFrame: node
         temperatures (``<node>_c``), heat, preload, axial growth, radial
         thermal displacement, front-bearing contact angles and loads,
-        radial stiffness, convergence report."""
+        radial stiffness, the radial load each pair carries
+        (``<pair>_pair_radial_x_n``: nose load side, ``_y_n``: the static
+        unbalanced magnetic pull ``magnetic_pull_n``, which acts with the
+        ``unbalanced_magnetic_pull`` effect on), convergence report."""
         import polars as pl
 
         from .errors import ConfigError
@@ -211,6 +214,11 @@ def _state_row(d: dict, sp: Spindle) -> dict:
     row["front_spin_heat_w"] = d["spin_heat_w"][0]
     row["bearing_heat_w"] = float(sum(d["bearing_heat_w"]))
     row["motor_losses_w"] = d["motor_losses_w"]
+    row["magnetic_pull_n"] = d["magnetic_pull_n"]
+    for pair in ("front", "rear"):
+        fx, fy = d[pair]["radial_load_n"]
+        row[f"{pair}_pair_radial_x_n"] = fx
+        row[f"{pair}_pair_radial_y_n"] = fy
     row["total_heat_w"] = d["total_heat_w"]
     row["boundary_flow_w"] = d["boundary_flow_w"]
     row["axial_growth_um"] = d["axial_growth_m"] * 1e6

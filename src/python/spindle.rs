@@ -61,6 +61,10 @@ fn pair_dict<'py>(py: Python<'py>, p: &PairState) -> PyResult<Bound<'py, PyDict>
     )?;
     d.set_item("inner_load_n", col(&|x| x.inner_load_n))?;
     d.set_item("outer_load_n", col(&|x| x.outer_load_n))?;
+    // Radial load [Fx, Fy] the pair carries: the sum over its two bearings
+    // (both frames share x and y, spindle/pair.rs).
+    let (la, lb) = (&p.bearings[0].applied_load_n_nm, &p.bearings[1].applied_load_n_nm);
+    d.set_item("radial_load_n", vec![la[0] + lb[0], la[1] + lb[1]])?;
     Ok(d)
 }
 
@@ -80,6 +84,7 @@ fn state_dict<'py>(py: Python<'py>, sp: &Spindle, s: &SpindleState) -> PyResult<
         .collect();
     d.set_item("spin_heat_w", spin)?;
     d.set_item("motor_losses_w", s.motor_losses_w)?;
+    d.set_item("magnetic_pull_n", sp.magnetic_pull_n())?;
     d.set_item("total_heat_w", s.total_heat_w)?;
     d.set_item("boundary_flow_w", s.boundary_flow_w)?;
     d.set_item("axial_growth_m", s.axial_growth_m)?;
@@ -268,6 +273,19 @@ impl PySpindle {
             "spring_preload",
             "one spring pack in the load path of all bearings; the axial growth between the sets compresses it",
         )?;
+        if let Some(m) = &c.magnetic_pull {
+            d.set_item("magnetic_pull_static_n", m.static_force_n())?;
+            d.set_item("magnetic_pull_core_from_front_pair_mm", m.core_from_front_pair_m * 1e3)?;
+            d.set_item("magnetic_pull_flux_density_t", m.pull.flux_density_t)?;
+            d.set_item(
+                "magnetic_pull_static_eccentricity_um",
+                m.pull.static_eccentricity_m * 1e6,
+            )?;
+            d.set_item(
+                "magnetic_pull_direction",
+                "+y, perpendicular to the nose load (+x); acts with the unbalanced_magnetic_pull effect on",
+            )?;
+        }
         Ok(d)
     }
 

@@ -24,7 +24,13 @@
 //! * External radial load at the nose (distance `nose_length_m` in front of
 //!   the front pair): rigid shaft on two simple supports (the pairs' moment
 //!   stiffness is not used to share the load): front F (1 + a/L), rear
-//!   -F a/L, L = front_span + rear_span.
+//!   -F a/L, L = front_span + rear_span, along x.
+//! * Unbalanced magnetic pull (effect `UnbalancedMagneticPull`, off in the
+//!   seed B default as in the rotor model): the static pull k_ump e_static
+//!   of the eccentric rotor core acts along y at the core centre (midway
+//!   between the pairs for seed B) and is shared by the same lever rule
+//!   ([`super::shaft_loads`]); each pair's radial load is then
+//!   hypot(F_x, F_y).
 //! * Heat per bearing from its quasi-static state (A-20..A-27): M1 with
 //!   Fa and Fr of that bearing, Mv at the pair's ball temperature, spin heat
 //!   per contact with the Hertz E(kappa) at the free contact angle, spin
@@ -45,6 +51,7 @@
 use rayon::prelude::*;
 
 use super::pair::{BearingPair, PairLoad, PairState, PairWarm, Preload};
+use super::shaft_loads::CoreMagneticPull;
 use crate::bearing::{BearingModel, BearingState, RacewayOffsets, SolveOptions};
 use crate::effects::{Effect, EffectSet};
 use crate::error::{finite, non_negative, positive, Error, Result};
@@ -76,8 +83,14 @@ pub struct SpindleConfig {
     pub spin_friction: f64,
     /// Temperature at which the spindle was assembled (zero thermal offsets) [C].
     pub assembly_temperature_c: f64,
-    /// Effects (high-speed bearing terms, thermal expansion by part, viscosity).
+    /// Effects (high-speed bearing terms, thermal expansion by part,
+    /// viscosity, unbalanced magnetic pull on the shaft).
     pub effects: EffectSet,
+    /// Static unbalanced magnetic pull of the motor rotor on the shaft; it
+    /// loads the pairs when `effects` has `UnbalancedMagneticPull`
+    /// ([`super::shaft_loads`]). None: no air-gap data (the effect is then
+    /// refused).
+    pub magnetic_pull: Option<CoreMagneticPull>,
     /// Largest fixed-point iterations of the coupled steady state.
     pub max_iterations: usize,
     /// Converged when no node temperature moves more than this [K].
@@ -86,8 +99,11 @@ pub struct SpindleConfig {
 
 impl SpindleConfig {
     /// Seed B spindle with `variant` bearings ("steel", "hybrid", "ceramic"),
-    /// rigid 300 N preload, no radial load (see the module docs and
-    /// [`SpindleParams::seed_b`]).
+    /// 400 N spring preload, no radial load (see the module docs and
+    /// [`SpindleParams::seed_b`]); every effect on except the unbalanced
+    /// magnetic pull, which is off by default as in the rotor model
+    /// (`SpindleVibrationConfig::seed`); its data are the rotor preset's
+    /// ([`CoreMagneticPull::seed_b`]).
     pub fn seed_b(variant: &str) -> Result<Self> {
         let suffix = match variant.to_ascii_lowercase().as_str() {
             "steel" => "",
@@ -105,6 +121,7 @@ impl SpindleConfig {
         params.front_bearing = Bearing::preset(&format!("7009C{suffix}"))?;
         params.rear_bearing = Bearing::preset(&format!("7008C{suffix}"))?;
         let ambient = params.ambient_temperature_c;
+        let magnetic_pull = CoreMagneticPull::seed_b(params.front_span_m + params.rear_span_m)?;
         Ok(SpindleConfig {
             params,
             // Seed B's test rig: 400 N preload by a spring pack whose rate
@@ -116,7 +133,8 @@ impl SpindleConfig {
             radial_load_n: 0.0,
             spin_friction: DEFAULT_SPIN_FRICTION,
             assembly_temperature_c: ambient,
-            effects: EffectSet::all(),
+            effects: EffectSet::all().without(Effect::UnbalancedMagneticPull),
+            magnetic_pull: Some(magnetic_pull),
             max_iterations: 60,
             tolerance_k: 1e-4,
         })
@@ -233,6 +251,17 @@ impl Spindle {
         if config.max_iterations == 0 {
             return Err(Error::config("max_iterations", 0, "need at least one iteration"));
         }
+        match &config.magnetic_pull {
+            Some(m) => m.validate()?,
+            None if config.effects.has(Effect::UnbalancedMagneticPull) => {
+                return Err(Error::config(
+                    "magnetic_pull",
+                    "None",
+                    "the unbalanced_magnetic_pull effect needs the rotor's air-gap data",
+                ))
+            }
+            None => {}
+        }
         let mut params = config.params.clone();
         let f0 = config.preload.force_n();
         positive("preload_n", f0)?;
@@ -305,6 +334,36 @@ impl Spindle {
         let a = p.nose_length_m;
         let f = self.config.radial_load_n;
         (f * (1.0 + a / l), -f * a / l)
+    }
+
+    /// Static unbalanced magnetic pull on the shaft, along +y [N]: the
+    /// configured pull with the `UnbalancedMagneticPull` effect on, else 0.
+    pub fn magnetic_pull_n(&self) -> f64 {
+        match &self.config.magnetic_pull {
+            Some(m) if self.config.effects.has(Effect::UnbalancedMagneticPull) => m.static_force_n(),
+            _ => 0.0,
+        }
+    }
+
+    /// Shares of the front and rear pairs of the magnetic pull, along +y
+    /// (lever rule on the rigid shaft, [`super::shaft_loads`]) [N].
+    pub fn pair_magnetic_pull_n(&self) -> Result<(f64, f64)> {
+        let p = &self.config.params;
+        let at = self
+            .config
+            .magnetic_pull
+            .as_ref()
+            .map_or(0.0, |m| m.core_from_front_pair_m);
+        super::shaft_loads::lever_rule_n(self.magnetic_pull_n(), at, p.front_span_m + p.rear_span_m)
+    }
+
+    /// External loads [Fx, Fy, Fz, Mx, My] on the front and rear pair
+    /// centres: the nose load along x ([`Self::pair_radial_loads_n`]) and
+    /// the magnetic pull along y ([`Self::pair_magnetic_pull_n`]) (N, N m).
+    pub fn pair_loads_n_nm(&self) -> Result<([f64; 5], [f64; 5])> {
+        let (xf, xr) = self.pair_radial_loads_n();
+        let (yf, yr) = self.pair_magnetic_pull_n()?;
+        Ok(([xf, yf, 0.0, 0.0, 0.0], [xr, yr, 0.0, 0.0, 0.0]))
     }
 
     fn mounting(&self, bearing: &Bearing) -> Mounting {
@@ -496,13 +555,13 @@ impl Spindle {
             }
         };
         let p = &self.config.params;
-        let (fr_front, fr_rear) = self.pair_radial_loads_n();
+        let (load_front, load_rear) = self.pair_loads_n_nm()?;
         let f_off = to_raceway(&fo, &p.front_bearing);
         let r_off = to_raceway(&ro, &p.rear_bearing);
         let front = self.front.solve_warm(
             speed_rpm,
             &PairLoad {
-                load_n_nm: [fr_front, 0.0, 0.0, 0.0, 0.0],
+                load_n_nm: load_front,
                 offsets: [f_off, f_off],
                 spring_growth_m,
             },
@@ -511,7 +570,7 @@ impl Spindle {
         let rear = self.rear.solve_warm(
             speed_rpm,
             &PairLoad {
-                load_n_nm: [fr_rear, 0.0, 0.0, 0.0, 0.0],
+                load_n_nm: load_rear,
                 offsets: [r_off, r_off],
                 spring_growth_m,
             },

@@ -8,6 +8,8 @@
 //!   runaway detection), the transient with quasi-steady mechanics, the
 //!   compensation preload (B Fig. 17), the optimal preload (B Figs. 15-16)
 //!   and speed x preload x load grids across threads.
+//! * [`shaft_loads`]: the pairs' radial loads from the forces on the rigid
+//!   shaft (nose load, static unbalanced magnetic pull [`CoreMagneticPull`]).
 //!
 //! ```
 //! use thermobear::spindle::{Preload, Spindle, SEED_B_SPRING_RATE_N_PER_M};
@@ -27,9 +29,11 @@ pub mod pair;
 
 pub use pair::{BearingPair, PairLoad, PairState, PairWarm, Preload};
 pub mod coupled;
+pub mod shaft_loads;
 
 pub use coupled::{
     compensation_preload, grid_point, optimal_preload, settling_times_s, spindle_grid, BearingHeatReport,
     CompensationPoint, GridPoint, OptimalPreload, Spindle, SpindleConfig, SpindleState, DEFAULT_SPIN_FRICTION,
     SEED_B_SPRING_RATE_N_PER_M,
 };
+pub use shaft_loads::{lever_rule_n, CoreMagneticPull};
