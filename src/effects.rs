@@ -141,8 +141,9 @@ impl Effect {
             | Effect::ThermalExpansionHousing => THERMAL,
             // src/thermal/coupled.rs and src/spindle/coupled.rs heat sources.
             Effect::TemperatureDependentViscosity => THERMAL,
-            // src/rotor/spindle_vibration.rs.
-            Effect::UnbalancedMagneticPull => &["rotor"],
+            // src/rotor/spindle_vibration.rs; its static pull loads the
+            // spindle's bearing pairs (src/spindle/shaft_loads.rs).
+            Effect::UnbalancedMagneticPull => &["spindle", "rotor"],
             // src/thermal/coupled.rs and src/spindle/coupled.rs heat sources.
             Effect::SpinFriction => THERMAL,
             // src/spindle/coupled.rs evaluate.
@@ -244,6 +245,6 @@ mod tests {
         let e = Effect::from_name("preload_change_from_axial_growth").unwrap();
         assert_eq!(e, Effect::PreloadChangeFromAxialGrowth);
         assert_eq!(e.models(), &["spindle"]);
-        assert_eq!(Effect::UnbalancedMagneticPull.models(), &["rotor"]);
+        assert_eq!(Effect::UnbalancedMagneticPull.models(), &["spindle", "rotor"]);
     }
 }

@@ -15,7 +15,8 @@ SPEED_RPM = 15_000.0
 def states():
     sp = tb.Spindle.preset("seed-ceramic-spindle")
     assert sp.preload_kind == "spring" and sp.preload_n == 400.0
-    names = tb.effects("switch")["name"].to_list()
+    # the spindle default: every effect but the magnetic pull
+    names = [n for n in tb.effects("switch")["name"] if n != "unbalanced_magnetic_pull"]
     on = sp.thermal_state(SPEED_RPM).row(0, named=True)
     off = sp.with_options(effects=[n for n in names if n != EFFECT])
     return sp, on, off.thermal_state(SPEED_RPM).row(0, named=True)
@@ -42,7 +43,8 @@ def test_growth_reaches_the_spring_only_with_the_effect_on(states):
 
 def test_rigid_preload_ignores_the_effect():
     sp = tb.Spindle.preset("seed-ceramic-spindle").with_options(preload_kind="rigid")
-    names = tb.effects("switch")["name"].to_list()
+    # the spindle default: every effect but the magnetic pull
+    names = [n for n in tb.effects("switch")["name"] if n != "unbalanced_magnetic_pull"]
     on = sp.thermal_state(SPEED_RPM)
     off = sp.with_options(effects=[n for n in names if n != EFFECT]).thermal_state(SPEED_RPM)
     assert on["axial_growth_um"][0] > 10.0
@@ -55,7 +57,7 @@ def test_registry_lists_models():
     assert {"name", "description", "models"} <= set(df.columns)
     models = dict(zip(df["name"], df["models"]))
     assert models[EFFECT] == "spindle"
-    assert models["unbalanced_magnetic_pull"] == "rotor"
+    assert models["unbalanced_magnetic_pull"] == "spindle,rotor"
     assert "rotor" in models["centrifugal_force"].split(",")
     known = {"bearing", "spindle", "rotor"}
     for m in df["models"]:

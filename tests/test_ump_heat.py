@@ -26,7 +26,7 @@ def spindle() -> tb.Spindle:
 
 @pytest.fixture(scope="module")
 def rows(spindle: tb.Spindle) -> tuple[dict, dict]:
-    every = tb.effects()["name"].to_list()
+    every = tb.effects("switch")["name"].to_list()
     on = spindle.with_options(effects=every).thermal_state(SPEED_RPM)
     off = spindle.with_options(effects=[e for e in every if e != UMP]).thermal_state(SPEED_RPM)
     return on.row(0, named=True), off.row(0, named=True)
