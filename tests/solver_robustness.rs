@@ -129,3 +129,38 @@ fn axial_offset_shifts_the_static_solution_with_held_tilt() {
         assert!((q - q0).abs() < 1e-6 * q0, "offset {u}: {q} vs {q0}");
     }
 }
+
+/// Light load, low speed: the 6208 under 0.25 N axial + 6 N radial at
+/// 1..100 rpm (balls off the load zone ride on the outer raceway under a
+/// centrifugal force of 1e-7..1e-3 N) used to stop with a ball-equilibrium
+/// error. The solution must tend to the static one as the speed vanishes,
+/// and the inner contact loads alone carry the load (outer-raceway
+/// control: no friction couple at the inner contact; A-8).
+#[test]
+fn light_load_low_speed_6208_solves_and_tends_to_the_static_solution() {
+    use thermobear::bearing::BearingLoad;
+    let b = Bearing::preset("6208").unwrap();
+    let m = BearingModel::new(&b).unwrap();
+    let o = held_options(EffectSet::all());
+    let load = BearingLoad::new(0.25, 6.0, 0.0);
+    let stat = m.solve_static(&load.to_vector(), &o).unwrap();
+    let qmax = |s: &thermobear::bearing::BearingState| s.balls.iter().map(|b| b.inner_load_n).fold(0.0, f64::max);
+    let q_static = qmax(&stat);
+    for n in [1.0, 3.0, 10.0, 30.0, 100.0] {
+        let s = b.solve(load, n, &o).unwrap_or_else(|e| panic!("{n} rpm: {e:?}"));
+        let (mut fx, mut fz) = (0.0, 0.0);
+        for ball in &s.balls {
+            let a = ball.inner_contact_angle_rad;
+            fx += ball.inner_load_n * a.cos() * ball.azimuth_rad.cos();
+            fz += ball.inner_load_n * a.sin();
+        }
+        assert!(
+            (fx - 6.0).abs() < 1e-6 && (fz - 0.25).abs() < 1e-6,
+            "{n} rpm: {fx} {fz}"
+        );
+        // Centrifugal force ~ n^2: at 1 rpm the loads are the static ones.
+        if n == 1.0 {
+            assert!((qmax(&s) / q_static - 1.0).abs() < 1e-4, "{} vs {q_static}", qmax(&s));
+        }
+    }
+}

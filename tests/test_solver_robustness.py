@@ -81,3 +81,19 @@ def test_light_load_top_speed_balances(b7008c, dropped):
         fx = qi * np.sin(ai) - qo * np.sin(ao)
         fy = qi * np.cos(ai) - qo * np.cos(ao)
         assert np.all(np.hypot(fx, fy) <= 0.1 * (qi + qo) * (1 + 1e-9))
+
+
+def test_light_load_low_speed_free_balls_solve():
+    """6208 under 0.25 N axial + 6 N radial at 1..100 rpm (balls off the
+    load zone ride on the outer raceway under a vanishing centrifugal
+    force): solves, and the inner contact loads carry the radial load
+    (outer-raceway control: no friction couple at the inner contact)."""
+    b = tb.Bearing.preset("6208")
+    for rpm in (1.0, 2.0, 5.0, 10.0, 25.0, 50.0, 100.0):
+        s = b.solve(speed_rpm=rpm, axial_n=0.25, radial_n=6.0)
+        balls = s.raw["balls"]
+        qi = balls["inner_load_n"]
+        ai = np.radians(balls["inner_contact_angle_deg"])
+        psi = np.radians(balls["azimuth_deg"])
+        assert np.sum(qi * np.cos(ai) * np.cos(psi)) == pytest.approx(6.0, rel=1e-6)
+        assert np.sum(qi * np.sin(ai)) == pytest.approx(0.25, rel=1e-6)

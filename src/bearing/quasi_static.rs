@@ -315,33 +315,112 @@ fn bent_start(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64)) -> [f64; 2] {
     [lo * ao.sin(), lo * ao.cos()]
 }
 
-/// Damped Newton iteration of one ball's equilibrium from `x0`
-/// (step capped at half the ball-to-groove-centre distance, backtracking
-/// until the residual falls).
+/// Coordinates of the ball centre in which [`newton_in`] steps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Coords {
+    /// x = (X1, X2) themselves.
+    Cartesian,
+    /// u = (L, a_o) about the outer groove centre, x = L (sin a_o, cos a_o).
+    Polar,
+}
+
+impl Coords {
+    fn coordinates(self, x: [f64; 2]) -> [f64; 2] {
+        match self {
+            Coords::Cartesian => x,
+            Coords::Polar => [x[0].hypot(x[1]), x[0].atan2(x[1])],
+        }
+    }
+
+    fn point(self, u: [f64; 2]) -> [f64; 2] {
+        match self {
+            Coords::Cartesian => u,
+            Coords::Polar => [u[0] * u[1].sin(), u[0] * u[1].cos()],
+        }
+    }
+
+    /// dx/du (columns per u component).
+    fn dx_du(self, u: [f64; 2]) -> [[f64; 2]; 2] {
+        match self {
+            Coords::Cartesian => [[1.0, 0.0], [0.0, 1.0]],
+            Coords::Polar => {
+                let (s, c) = u[1].sin_cos();
+                [[s, u[0] * c], [c, -u[0] * s]]
+            }
+        }
+    }
+
+    /// Length of a step du [m].
+    fn step_m(self, u: [f64; 2], du: [f64; 2]) -> f64 {
+        match self {
+            Coords::Cartesian => du[0].abs().max(du[1].abs()),
+            Coords::Polar => du[0].abs().max((u[0] * du[1]).abs()),
+        }
+    }
+}
+
+/// Damped Newton iteration of one ball's equilibrium from `x0`.
+///
+/// A ball that rides on the outer raceway under a small force (its
+/// centrifugal force at low speed) has a radial contact stiffness many
+/// orders above its tangential one (1.5 Q / delta vs Q / L): a Cartesian
+/// step along the tangent leaves the raceway by L (1 - cos(da)) >> delta_o
+/// and backtracking shrinks it to nothing (the 6208 at 1..100 rpm under
+/// 0.25 N axial + 6 N radial stalled at 3 % of its load). Polar
+/// coordinates about the outer groove centre follow that raceway; a ball
+/// pinched between both raceways is better served by Cartesian steps. Start
+/// with polar coordinates when the inner contact is open at `x0`, with
+/// Cartesian ones otherwise, and try the other on failure.
 fn ball_newton(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), x0: [f64; 2]) -> Result<([f64; 2], BallTerms)> {
+    let riding = ball_terms(m, ctx, x0, p).qi == 0.0;
+    let (first, second) = if riding {
+        (Coords::Polar, Coords::Cartesian)
+    } else {
+        (Coords::Cartesian, Coords::Polar)
+    };
+    newton_in(m, ctx, p, x0, first).or_else(|_| newton_in(m, ctx, p, x0, second))
+}
+
+/// [`ball_newton`] in the given coordinates: step capped at half the
+/// ball-to-groove-centre distance, backtracking until the residual falls.
+fn newton_in(
+    m: &BearingModel,
+    ctx: &SpeedContext,
+    p: (f64, f64),
+    x0: [f64; 2],
+    coords: Coords,
+) -> Result<([f64; 2], BallTerms)> {
+    let mut u = coords.coordinates(x0);
     let mut x = x0;
     let norm = |t: &BallTerms| t.r_ax.v.abs().max(t.r_rad.v.abs());
     let mut t = ball_terms(m, ctx, x, p);
     let mut converged = false;
     let mut it = 0;
+    let mut tol = 0.0;
     while it < 60 {
         let scale = (t.qi + t.qo + t.fc).max(1e-12);
+        let jx = [[t.r_ax.d[0], t.r_ax.d[1]], [t.r_rad.d[0], t.r_rad.d[1]]];
+        let roundoff = roundoff_force(&jx, x[0].hypot(x[1]));
+        tol = (1e-11 * scale).max(roundoff);
         let rn = norm(&t);
-        if rn <= 1e-11 * scale {
+        if rn <= tol {
             converged = true;
             break;
         }
-        let j = [[t.r_ax.d[0], t.r_ax.d[1]], [t.r_rad.d[0], t.r_rad.d[1]]];
+        // d r / du = d r / dx * d x / du.
+        let dxu = coords.dx_du(u);
+        let j: [[f64; 2]; 2] =
+            std::array::from_fn(|r| std::array::from_fn(|c| jx[r][0] * dxu[0][c] + jx[r][1] * dxu[1][c]));
         let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
         if det == 0.0 || !det.is_finite() {
             break;
         }
-        let dx = [
+        let du = [
             -(j[1][1] * t.r_ax.v - j[0][1] * t.r_rad.v) / det,
             -(-j[1][0] * t.r_ax.v + j[0][0] * t.r_rad.v) / det,
         ];
         // Keep the step below half the ball-to-groove-centre distance.
-        let big = dx[0].abs().max(dx[1].abs());
+        let big = coords.step_m(u, du);
         let mut lam = if big > 0.5 * m.ro_off {
             0.5 * m.ro_off / big
         } else {
@@ -349,20 +428,20 @@ fn ball_newton(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), x0: [f64; 2]
         };
         let mut accepted = None;
         for _ in 0..40 {
-            let xt = [x[0] + lam * dx[0], x[1] + lam * dx[1]];
+            let ut = [u[0] + lam * du[0], u[1] + lam * du[1]];
+            let xt = coords.point(ut);
             let tt = ball_terms(m, ctx, xt, p);
             if norm(&tt) < rn {
-                accepted = Some((xt, tt));
+                accepted = Some((ut, xt, tt));
                 break;
             }
             lam *= 0.5;
         }
         it += 1;
         match accepted {
-            Some((xt, tt)) => {
+            Some((ut, xt, tt)) => {
                 let step = (lam * big).abs();
-                x = xt;
-                t = tt;
+                (u, x, t) = (ut, xt, tt);
                 if step <= 1e-14 * x[0].abs().max(x[1].abs()) {
                     converged = true;
                     break;
@@ -370,20 +449,27 @@ fn ball_newton(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), x0: [f64; 2]
             }
             None => {
                 // No decrease possible: accept round-off level residuals.
-                converged = rn <= 1e-9 * scale;
+                converged = rn <= (1e-9 * scale).max(roundoff);
                 break;
             }
         }
     }
     if !converged {
-        return Err(Error::convergence(
-            "ball equilibrium (A-15)",
-            it,
-            norm(&t),
-            1e-11 * (t.qi + t.qo + t.fc),
-        ));
+        return Err(Error::convergence("ball equilibrium (A-15)", it, norm(&t), tol));
     }
     Ok((x, t))
+}
+
+/// Force residual that a ball position known to round-off produces [N]:
+/// the largest contact stiffness |d r / dx| times 64 ulp of the distance L
+/// to the outer groove centre. The approach delta = L - (f_o - 0.5) D is a
+/// difference of two lengths of size L, so a lightly pressed ball (the
+/// centrifugal force at a few rpm: delta ~ 1e-11 m, Q ~ 1e-7 N) has its
+/// loads known to about eps L / delta only, far coarser than the relative
+/// 1e-11 of its own forces; the ring forces are untouched at that level.
+fn roundoff_force(jx: &[[f64; 2]; 2], l: f64) -> f64 {
+    let jmax = jx.iter().flatten().fold(0.0f64, |acc, v| acc.max(v.abs()));
+    64.0 * f64::EPSILON * l * jmax
 }
 
 /// Ball equilibrium from the static position. Without centrifugal force
