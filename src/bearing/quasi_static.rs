@@ -68,9 +68,31 @@ pub(crate) struct SpeedContext {
     fc_coef: f64,
     inertia: f64,
     d: f64,
+    traction: f64,
 }
 
 impl SpeedContext {
+    /// Contact angle difference a_i - a_o of a ball that slides against its
+    /// gyroscopic moment (couple = mu (Q_i + Q_o) D / 2): the force balance
+    /// Q_i n_i - Q_o n_o + mu (Q_i + Q_o) t = 0 with t normal to the
+    /// controlling contact's normal gives Q_o = Q_i cos(Da) and
+    /// sin(Da) = mu (1 + cos(Da)), i.e. tan(Da / 2) = mu [rad, magnitude].
+    fn slip_bend_rad(&self) -> f64 {
+        if self.gyroscopic && !self.centrifugal {
+            2.0 * self.traction.atan()
+        } else {
+            0.0
+        }
+    }
+
+    /// Groove-centre distance |p| at which a ball without centrifugal force
+    /// first carries load: the two unloaded groove radii (f - 0.5) D meet at
+    /// the slip bend (law of cosines; A = B_f D without gyroscopic moment) [m].
+    pub(crate) fn onset_distance(&self, m: &BearingModel) -> f64 {
+        let c = self.slip_bend_rad().cos();
+        (m.ri_off * m.ri_off + m.ro_off * m.ro_off + 2.0 * c * m.ri_off * m.ro_off).sqrt()
+    }
+
     pub(crate) fn new(model: &BearingModel, speed_rpm: f64, opts: &SolveOptions) -> Result<Self> {
         crate::error::finite("speed_rpm", speed_rpm)?;
         let omega_i = rpm_to_rad_s(speed_rpm);
@@ -93,6 +115,7 @@ impl SpeedContext {
             fc_coef: 0.5 * model.ball_mass_kg * model.dm,
             inertia: model.ball_inertia_kg_m2,
             d: model.d,
+            traction: opts.traction_coefficient,
         })
     }
 }
@@ -113,6 +136,32 @@ pub(crate) struct BallTerms {
     dlo: f64,
     fc: f64,
     mg: f64,
+}
+
+/// Friction couple on a ball against its gyroscopic moment `mg` [N m],
+/// given the Coulomb capacity `cap` = mu (Q_i + Q_o) D / 2 [N m] of its two
+/// contacts: the full couple Mg of Jones's raceway control where friction
+/// can hold it, else the sliding friction couple `cap` (the ball slips
+/// gyroscopically).
+///
+/// Applied to balls without centrifugal force. There the loads of a ball
+/// vanish when its gap closes, and with the full couple the ball would have
+/// to bend its contact line by tan(a_i - a_o) ~ 2 Mg / (D Q) -> infinity: the
+/// ring reaction jumped from zero to a finite load (about 110 N for the
+/// 7008C at 18,000 rpm) as the gap closed, and lighter loads had no
+/// equilibrium. With the bound a sliding ball bends by the fixed angle
+/// a_i - a_o = 2 atan(mu) (see [`SpeedContext::onset_distance`]) and its
+/// loads grow continuously from zero. With the centrifugal force on, the
+/// outer contact carries at least Fc and the full couple is kept as before
+/// (seed A); the balls of the presets need mu ~ 0.01..0.02 there under
+/// outer-raceway control.
+#[inline]
+pub(crate) fn friction_couple(mg: D4, cap: D4) -> D4 {
+    if cap.v < mg.v.abs() {
+        cap * mg.v.signum()
+    } else {
+        mg
+    }
 }
 
 /// Residuals and ring reactions of one ball (see module docs).
@@ -146,12 +195,22 @@ pub(crate) fn ball_terms(m: &BearingModel, ctx: &SpeedContext, x: [f64; 2], p: (
     } else {
         (zero, zero)
     };
-    let h = mg * (ctx.sign / ctx.d);
+    // Friction couple that holds the ball against Mg: Jones's full couple,
+    // bounded by Coulomb friction for a ball without centrifugal force (see
+    // [`friction_couple`]).
+    let couple = if !ctx.gyroscopic {
+        zero
+    } else if ctx.centrifugal {
+        mg
+    } else {
+        friction_couple(mg, (qi + qo) * (0.5 * ctx.traction * ctx.d))
+    };
+    let h = couple * (ctx.sign / ctx.d);
     let r_ax = qi * si - qo * so + h * (ci * ctx.lam_i - co * ctx.lam_o);
     let r_rad = qi * ci - qo * co - h * (si * ctx.lam_i - so * ctx.lam_o) + fc;
     let f1 = -(qi * si + h * ci * ctx.lam_i);
     let f2 = -(qi * ci - h * si * ctx.lam_i);
-    let mt = -(mg * (ctx.sign * ctx.lam_i * m.fi));
+    let mt = -(couple * (ctx.sign * ctx.lam_i * m.fi));
     BallTerms {
         r_ax,
         r_rad,
@@ -219,38 +278,149 @@ fn static_start(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64)) -> [f64; 2]
             lo * s.clamp(-0.05, 0.05),
             lo * (1.0 - s.clamp(-0.05, 0.05).powi(2)).sqrt(),
         ]
+    } else if ctx.gyroscopic {
+        bent_start(m, ctx, p)
     } else {
         [m.ro_off * s, m.ro_off * c]
     }
 }
 
-/// Damped Newton iteration of one ball's equilibrium from `x0`
-/// (step capped at half the ball-to-groove-centre distance, backtracking
-/// until the residual falls).
+/// Start of a ball without centrifugal force whose groove centres are
+/// closer than A: equal approaches at both contacts and the contact line
+/// bent by the slip angle of [`SpeedContext::slip_bend_rad`], on the side
+/// the friction couple pushes it (a_i - a_o has the sign of
+/// (lambda_o - lambda_i) h). Falls back to the straight position if the
+/// groove centres are too close for contact.
+fn bent_start(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64)) -> [f64; 2] {
+    let big = p.0.hypot(p.1);
+    let phi = p.0.atan2(p.1);
+    let straight = [m.ro_off * phi.sin(), m.ro_off * phi.cos()];
+    let onset = ctx.onset_distance(m);
+    let bend = ctx.slip_bend_rad();
+    if big <= onset || bend == 0.0 {
+        return straight;
+    }
+    // Sense of the bend from the couple's sign at the straight position.
+    let t = ball_terms(m, ctx, straight, p);
+    let h = t.mg * ctx.sign;
+    let sense = (h * (ctx.lam_o - ctx.lam_i)).signum();
+    // (ri + d)^2 + (ro + d)^2 + 2 cos(bend) (ri + d)(ro + d) = |p|^2.
+    let sum = m.ri_off + m.ro_off;
+    let delta = 0.5 * (-sum + (sum * sum + 2.0 * (big * big - onset * onset) / (1.0 + bend.cos())).sqrt());
+    let (li, lo) = (m.ri_off + delta, m.ro_off + delta);
+    let beta_o = ((lo * lo + big * big - li * li) / (2.0 * lo * big))
+        .clamp(-1.0, 1.0)
+        .acos();
+    let ao = phi - sense * beta_o;
+    [lo * ao.sin(), lo * ao.cos()]
+}
+
+/// Coordinates of the ball centre in which [`newton_in`] steps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Coords {
+    /// x = (X1, X2) themselves.
+    Cartesian,
+    /// u = (L, a_o) about the outer groove centre, x = L (sin a_o, cos a_o).
+    Polar,
+}
+
+impl Coords {
+    fn coordinates(self, x: [f64; 2]) -> [f64; 2] {
+        match self {
+            Coords::Cartesian => x,
+            Coords::Polar => [x[0].hypot(x[1]), x[0].atan2(x[1])],
+        }
+    }
+
+    fn point(self, u: [f64; 2]) -> [f64; 2] {
+        match self {
+            Coords::Cartesian => u,
+            Coords::Polar => [u[0] * u[1].sin(), u[0] * u[1].cos()],
+        }
+    }
+
+    /// dx/du (columns per u component).
+    fn dx_du(self, u: [f64; 2]) -> [[f64; 2]; 2] {
+        match self {
+            Coords::Cartesian => [[1.0, 0.0], [0.0, 1.0]],
+            Coords::Polar => {
+                let (s, c) = u[1].sin_cos();
+                [[s, u[0] * c], [c, -u[0] * s]]
+            }
+        }
+    }
+
+    /// Length of a step du [m].
+    fn step_m(self, u: [f64; 2], du: [f64; 2]) -> f64 {
+        match self {
+            Coords::Cartesian => du[0].abs().max(du[1].abs()),
+            Coords::Polar => du[0].abs().max((u[0] * du[1]).abs()),
+        }
+    }
+}
+
+/// Damped Newton iteration of one ball's equilibrium from `x0`.
+///
+/// A ball that rides on the outer raceway under a small force (its
+/// centrifugal force at low speed) has a radial contact stiffness many
+/// orders above its tangential one (1.5 Q / delta vs Q / L): a Cartesian
+/// step along the tangent leaves the raceway by L (1 - cos(da)) >> delta_o
+/// and backtracking shrinks it to nothing (the 6208 at 1..100 rpm under
+/// 0.25 N axial + 6 N radial stalled at 3 % of its load). Polar
+/// coordinates about the outer groove centre follow that raceway; a ball
+/// pinched between both raceways is better served by Cartesian steps. Start
+/// with polar coordinates when the inner contact is open at `x0`, with
+/// Cartesian ones otherwise, and try the other on failure.
 fn ball_newton(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), x0: [f64; 2]) -> Result<([f64; 2], BallTerms)> {
+    let riding = ball_terms(m, ctx, x0, p).qi == 0.0;
+    let (first, second) = if riding {
+        (Coords::Polar, Coords::Cartesian)
+    } else {
+        (Coords::Cartesian, Coords::Polar)
+    };
+    newton_in(m, ctx, p, x0, first).or_else(|_| newton_in(m, ctx, p, x0, second))
+}
+
+/// [`ball_newton`] in the given coordinates: step capped at half the
+/// ball-to-groove-centre distance, backtracking until the residual falls.
+fn newton_in(
+    m: &BearingModel,
+    ctx: &SpeedContext,
+    p: (f64, f64),
+    x0: [f64; 2],
+    coords: Coords,
+) -> Result<([f64; 2], BallTerms)> {
+    let mut u = coords.coordinates(x0);
     let mut x = x0;
     let norm = |t: &BallTerms| t.r_ax.v.abs().max(t.r_rad.v.abs());
     let mut t = ball_terms(m, ctx, x, p);
     let mut converged = false;
     let mut it = 0;
+    let mut tol = 0.0;
     while it < 60 {
         let scale = (t.qi + t.qo + t.fc).max(1e-12);
+        let jx = [[t.r_ax.d[0], t.r_ax.d[1]], [t.r_rad.d[0], t.r_rad.d[1]]];
+        let roundoff = roundoff_force(&jx, x[0].hypot(x[1]));
+        tol = (1e-11 * scale).max(roundoff);
         let rn = norm(&t);
-        if rn <= 1e-11 * scale {
+        if rn <= tol {
             converged = true;
             break;
         }
-        let j = [[t.r_ax.d[0], t.r_ax.d[1]], [t.r_rad.d[0], t.r_rad.d[1]]];
+        // d r / du = d r / dx * d x / du.
+        let dxu = coords.dx_du(u);
+        let j: [[f64; 2]; 2] =
+            std::array::from_fn(|r| std::array::from_fn(|c| jx[r][0] * dxu[0][c] + jx[r][1] * dxu[1][c]));
         let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
         if det == 0.0 || !det.is_finite() {
             break;
         }
-        let dx = [
+        let du = [
             -(j[1][1] * t.r_ax.v - j[0][1] * t.r_rad.v) / det,
             -(-j[1][0] * t.r_ax.v + j[0][0] * t.r_rad.v) / det,
         ];
         // Keep the step below half the ball-to-groove-centre distance.
-        let big = dx[0].abs().max(dx[1].abs());
+        let big = coords.step_m(u, du);
         let mut lam = if big > 0.5 * m.ro_off {
             0.5 * m.ro_off / big
         } else {
@@ -258,20 +428,20 @@ fn ball_newton(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), x0: [f64; 2]
         };
         let mut accepted = None;
         for _ in 0..40 {
-            let xt = [x[0] + lam * dx[0], x[1] + lam * dx[1]];
+            let ut = [u[0] + lam * du[0], u[1] + lam * du[1]];
+            let xt = coords.point(ut);
             let tt = ball_terms(m, ctx, xt, p);
             if norm(&tt) < rn {
-                accepted = Some((xt, tt));
+                accepted = Some((ut, xt, tt));
                 break;
             }
             lam *= 0.5;
         }
         it += 1;
         match accepted {
-            Some((xt, tt)) => {
+            Some((ut, xt, tt)) => {
                 let step = (lam * big).abs();
-                x = xt;
-                t = tt;
+                (u, x, t) = (ut, xt, tt);
                 if step <= 1e-14 * x[0].abs().max(x[1].abs()) {
                     converged = true;
                     break;
@@ -279,24 +449,49 @@ fn ball_newton(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), x0: [f64; 2]
             }
             None => {
                 // No decrease possible: accept round-off level residuals.
-                converged = rn <= 1e-9 * scale;
+                converged = rn <= (1e-9 * scale).max(roundoff);
                 break;
             }
         }
     }
     if !converged {
-        return Err(Error::convergence(
-            "ball equilibrium (A-15)",
-            it,
-            norm(&t),
-            1e-11 * (t.qi + t.qo + t.fc),
-        ));
+        return Err(Error::convergence("ball equilibrium (A-15)", it, norm(&t), tol));
     }
     Ok((x, t))
 }
 
+/// Force residual that a ball position known to round-off produces [N]:
+/// the largest contact stiffness |d r / dx| times 64 ulp of the distance L
+/// to the outer groove centre. The approach delta = L - (f_o - 0.5) D is a
+/// difference of two lengths of size L, so a lightly pressed ball (the
+/// centrifugal force at a few rpm: delta ~ 1e-11 m, Q ~ 1e-7 N) has its
+/// loads known to about eps L / delta only, far coarser than the relative
+/// 1e-11 of its own forces; the ring forces are untouched at that level.
+fn roundoff_force(jx: &[[f64; 2]; 2], l: f64) -> f64 {
+    let jmax = jx.iter().flatten().fold(0.0f64, |acc, v| acc.max(v.abs()));
+    64.0 * f64::EPSILON * l * jmax
+}
+
+/// Ball equilibrium from the static position. Without centrifugal force
+/// but with the gyroscopic couple, a lightly loaded ball slides and sits
+/// bent by the slip angle, far from the straight static position: if the
+/// contacts at the static position cannot hold the couple (Coulomb), start
+/// from [`bent_start`] first, the static position second, and the other
+/// way round otherwise.
+fn cold_ball_newton(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64)) -> Result<([f64; 2], BallTerms)> {
+    let straight = static_start(m, ctx, p);
+    if !ctx.gyroscopic || ctx.centrifugal {
+        return ball_newton(m, ctx, p, straight);
+    }
+    let t = ball_terms(m, ctx, straight, p);
+    let slides = 0.5 * ctx.traction * ctx.d * (t.qi + t.qo) < t.mg.abs();
+    let bent = bent_start(m, ctx, p);
+    let (first, second) = if slides { (bent, straight) } else { (straight, bent) };
+    ball_newton(m, ctx, p, first).or_else(|_| ball_newton(m, ctx, p, second))
+}
+
 fn solve_ball(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), prev: &mut BallSolution) -> Result<Condensed> {
-    if !ctx.centrifugal && p.0.hypot(p.1) <= m.a0 {
+    if !ctx.centrifugal && p.0.hypot(p.1) <= ctx.onset_distance(m) {
         // Free ball: no centrifugal force and an open gap.
         *prev = BallSolution {
             x: static_start(m, ctx, p),
@@ -323,10 +518,10 @@ fn solve_ball(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), prev: &mut Ba
         // the residual. Restart from the cold (static) position then.
         match ball_newton(m, ctx, p, predicted) {
             Ok(sol) => sol,
-            Err(_) => ball_newton(m, ctx, p, static_start(m, ctx, p))?,
+            Err(_) => cold_ball_newton(m, ctx, p)?,
         }
     } else {
-        ball_newton(m, ctx, p, static_start(m, ctx, p))?
+        cold_ball_newton(m, ctx, p)?
     };
     // Implicit-function condensation.
     let jx = [[t.r_ax.d[0], t.r_ax.d[1]], [t.r_rad.d[0], t.r_rad.d[1]]];
@@ -514,6 +709,7 @@ impl BearingModel {
             self,
             load,
             start_m_rad,
+            ctx.u_r,
             opts,
             "quasi-static bearing equilibrium",
             &mut |q| qs_ring(self, &ctx, q, opts, warm),
@@ -695,6 +891,50 @@ mod tests {
             let couple_rev = cross(arm, fric_rev);
             assert!((couple_rev[1] + dhdt[1]).abs() < 1e-9 * dhdt[1]);
         }
+    }
+
+    /// A ball without centrifugal force whose groove centres are just past
+    /// the contact onset slides against its gyroscopic moment: the friction
+    /// force is mu (Q_i + Q_o), so Q_o = Q_i cos(a_i - a_o) and
+    /// tan((a_i - a_o) / 2) = mu (closed form of the force balance), with
+    /// loads that vanish at the onset distance.
+    #[test]
+    fn sliding_ball_bends_by_twice_the_friction_angle() {
+        let m = BearingModel::new(&Bearing::preset("7008C").unwrap()).unwrap();
+        let o = SolveOptions {
+            effects: crate::effects::EffectSet::all().without(Effect::CentrifugalForce),
+            ..Default::default()
+        };
+        let ctx = SpeedContext::new(&m, 18_000.0, &o).unwrap();
+        let onset = ctx.onset_distance(&m);
+        assert!(onset < m.a0);
+        let dir = 16f64.to_radians();
+        let mut last = 0.0;
+        for k in 1..=5 {
+            let l = onset + 1e-8 * k as f64;
+            let p = (l * dir.sin(), l * dir.cos());
+            let mut sol = BallSolution::default();
+            solve_ball(&m, &ctx, p, &mut sol).unwrap();
+            let t = ball_terms(&m, &ctx, sol.x, p);
+            let ai = (p.0 - sol.x[0]).atan2(p.1 - sol.x[1]);
+            let ao = sol.x[0].atan2(sol.x[1]);
+            assert!(
+                0.5 * o.traction_coefficient * m.d * (t.qi + t.qo) < t.mg.abs(),
+                "not sliding"
+            );
+            assert!(
+                ((ai - ao) - 2.0 * o.traction_coefficient.atan()).abs() < 1e-9,
+                "{}",
+                ai - ao
+            );
+            assert!((t.qo - t.qi * (ai - ao).cos()).abs() < 1e-9 * t.qi);
+            assert!(t.qi > last);
+            last = t.qi;
+        }
+        // Closer than the onset the ball is free.
+        let p = (0.999 * onset * dir.sin(), 0.999 * onset * dir.cos());
+        let c = solve_ball(&m, &ctx, p, &mut BallSolution::default()).unwrap();
+        assert_eq!(c.f, [0.0; 3]);
     }
 
     /// A ball whose groove centres move from a loaded position to one with

@@ -88,6 +88,17 @@ pub struct SolveOptions {
     pub offsets: RacewayOffsets,
     /// Free or held ring tilt. Default: free.
     pub tilt: Tilt,
+    /// Largest friction coefficient of the ball-raceway contacts available
+    /// to hold the gyroscopic moment of a ball without centrifugal force
+    /// (dimensionless): the friction couple is at most mu (Q_i + Q_o) D / 2
+    /// (Coulomb), beyond which the ball slips gyroscopically (see
+    /// `quasi_static::friction_couple`). Default 0.1, the upper end of the
+    /// limiting traction coefficients of lubricated steel contacts (Harris &
+    /// Kotzalas, Advanced Concepts of Bearing Technology, 5th ed., traction
+    /// curves 0.03..0.1), so the full couple is kept wherever a lubricated
+    /// contact could hold it. Ignored with the centrifugal force on (Jones's
+    /// full couple, seed A).
+    pub traction_coefficient: f64,
 }
 
 impl Default for SolveOptions {
@@ -100,6 +111,7 @@ impl Default for SolveOptions {
             max_iterations: 100,
             offsets: RacewayOffsets::default(),
             tilt: Tilt::Free,
+            traction_coefficient: 0.1,
         }
     }
 }

@@ -22,6 +22,7 @@ use nalgebra::{Matrix5, Vector5};
 
 use super::dual::Dual;
 use super::model::BearingModel;
+use super::model::RacewayOffsets;
 use super::state::{BallState, BearingState, SolveOptions, Tilt};
 use super::stiffness::seed_stiffness;
 use crate::error::{Error, Result};
@@ -208,7 +209,7 @@ pub(crate) fn static_displacement(model: &BearingModel, load: &[f64; 5], opts: &
     model.check_load(load)?;
     check_options(opts)?;
     let q0 = initial_guess(model, load, opts)?;
-    solve_ring(model, load, q0, opts, "static bearing equilibrium", &mut |q| {
+    solve_ring(model, load, q0, 0.0, opts, "static bearing equilibrium", &mut |q| {
         Ok(static_ring(model, q, opts))
     })
 }
@@ -220,6 +221,7 @@ pub(crate) fn check_options(opts: &SolveOptions) -> Result<()> {
     }
     crate::error::finite("offsets.axial_m", opts.offsets.axial_m)?;
     crate::error::finite("offsets.radial_m", opts.offsets.radial_m)?;
+    crate::error::in_range("traction_coefficient", opts.traction_coefficient, 0.0, 1.0)?;
     if let Tilt::Fixed {
         theta_x_rad,
         theta_y_rad,
@@ -293,14 +295,75 @@ pub(crate) struct RingSolution {
     pub residual: f64,
 }
 
+/// Step length t along the ring displacement direction `dir` (q-space,
+/// unscaled) from a position q where no ball touches, to where the balls
+/// carry about the load: the first ball reaches |p_j| = A (contact onset of
+/// the static model, A-5/A-6: |p_j| is linear in t, so the onset is a root
+/// of a quadratic), plus the approach delta = (F / (Z K_n))^(2/3) that
+/// carries the load magnitude `force_n` shared by all balls (A-2, A-3; a
+/// lower bound of the loaded approach: the iteration continues upwards from
+/// it, where every ball that touches has a stiffness). `None` if no ball
+/// comes into contact along `dir`.
+pub(crate) fn reseat_step(
+    model: &BearingModel,
+    q: &[f64; 5],
+    dir: &[f64; 5],
+    u_r: f64,
+    offsets: &RacewayOffsets,
+    force_n: f64,
+) -> Option<f64> {
+    let a = model.a0;
+    let mut first: Option<(f64, f64)> = None;
+    for j in 0..model.ball_count() {
+        let p = model.groove_distances(j, q, u_r, offsets);
+        let (g1, g2) = model.groove_gradients(j);
+        let v = (dot5(&g1, dir), dot5(&g2, dir));
+        // |p + t v|^2 = A^2:  vv t^2 + 2 pv t + (pp - A^2) = 0.
+        let vv = v.0 * v.0 + v.1 * v.1;
+        if vv <= 0.0 || !vv.is_finite() {
+            continue;
+        }
+        let pv = p.0 * v.0 + p.1 * v.1;
+        let c = p.0 * p.0 + p.1 * p.1 - a * a;
+        let disc = pv * pv - vv * c;
+        if disc < 0.0 {
+            continue;
+        }
+        // Larger root: where |p| grows through A along the ray.
+        let t = (-pv + disc.sqrt()) / vv;
+        if !(t > 0.0 && t.is_finite()) {
+            continue;
+        }
+        // Rate d|p|/dt at the onset (|p| = A there).
+        let rate = (pv + t * vv) / a;
+        if rate > 0.0 && first.is_none_or(|(tf, _)| t < tf) {
+            first = Some((t, rate));
+        }
+    }
+    let (t, rate) = first?;
+    let z = model.ball_count() as f64;
+    let kn = model.ball_constant(model.bearing.geometry.free_contact_angle_rad);
+    let delta = (force_n / (z * kn)).powf(2.0 / 3.0);
+    Some(t + delta / rate)
+}
+
+fn dot5(a: &[f64; 5], b: &[f64; 5]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
 /// Damped Newton iteration on load + reaction(q) = 0 in scaled
 /// variables (tilts times R_i, moments over R_i), with a tiny Levenberg
 /// regularisation for directions without stiffness and backtracking on the
 /// residual norm. `eval` returns (reaction, K = -d reaction / dq).
+///
+/// `u_r` is the radial growth of the inner raceway used by `eval` (A-10;
+/// zero at rest): the no-contact step needs the groove geometry that `eval`
+/// sees (see [`reseat_step`]).
 pub(crate) fn solve_ring(
     model: &BearingModel,
     load: &[f64; 5],
     q0: [f64; 5],
+    u_r: f64,
     opts: &SolveOptions,
     solver: &str,
     eval: &mut RingEval<'_>,
@@ -352,16 +415,47 @@ pub(crate) fn solve_ring(
             _ if i == j => 1.0,
             _ => 0.0,
         });
-        let diag_max = (0..5).map(|i| ks[(i, i)].abs()).fold(0.0, f64::max);
+        // Contact is judged on the free DOF only: a held tilt has a unit
+        // placeholder on its diagonal, not a stiffness.
+        let diag_max = (0..5)
+            .filter(|i| free[*i])
+            .map(|i| ks[(i, i)].abs())
+            .fold(0.0, f64::max);
         let no_contact = diag_max <= 0.0;
-        let mu = if no_contact { k_ref } else { 1e-12 * diag_max };
-        let step = (ks + Matrix5::identity() * mu)
-            .lu()
-            .solve(&g)
-            .filter(|s| s.iter().all(|v| v.is_finite()))
-            .ok_or_else(|| Error::convergence(solver, it, res, opts.tolerance))?;
-        let big = step.amax();
-        let mut t = if big > max_step { max_step / big } else { 1.0 };
+        let (step, big, mut t) = if no_contact {
+            // No ball touches (the offsets or the start opened every gap):
+            // the reaction is zero around q, so Newton has nothing to go on
+            // and a backtracking line search along the load cannot succeed
+            // when the gap is wider than the Hertz approach the load needs.
+            // Move along the load to where the balls re-seat instead.
+            let dir: [f64; 5] = std::array::from_fn(|i| g[i] / scale[i]);
+            match reseat_step(model, &q, &dir, u_r, &opts.offsets, g.norm()) {
+                Some(t) => (Vector5::from_fn(|i, _| dir[i] * scale[i]), 0.0, t),
+                None => {
+                    // Fallback: a step against the stiffness of all balls at
+                    // 1 um approach.
+                    let step = (ks + Matrix5::identity() * k_ref)
+                        .lu()
+                        .solve(&g)
+                        .filter(|s| s.iter().all(|v| v.is_finite()))
+                        .ok_or_else(|| Error::convergence(solver, it, res, opts.tolerance))?;
+                    let big = step.amax();
+                    (step, big, 1.0)
+                }
+            }
+        } else {
+            let mu = 1e-12 * diag_max;
+            let step = (ks + Matrix5::identity() * mu)
+                .lu()
+                .solve(&g)
+                .filter(|s| s.iter().all(|v| v.is_finite()))
+                .ok_or_else(|| Error::convergence(solver, it, res, opts.tolerance))?;
+            let big = step.amax();
+            (step, big, 1.0)
+        };
+        if big > max_step {
+            t = max_step / big;
+        }
         let mut accepted = false;
         for _ in 0..40 {
             let trial: [f64; 5] = std::array::from_fn(|i| q[i] + t * step[i] / scale[i]);

@@ -39,9 +39,12 @@
 //! largest node change is below `tolerance_k` and the raceway offsets moved
 //! less than `tolerance_m`.
 //!
-//! Thermal runaway is reported as [`Error::ThermalRunaway`] when (a) a node
-//! exceeds the lubricant's highest temperature with data (a physical
-//! bound: the lubricant fails there), or (b) heat, the hottest node and the
+//! Thermal runaway is reported as [`Error::ThermalRunaway`] when (a) the
+//! bearing held at the lubricant's highest temperature with data (a
+//! physical bound: the lubricant fails there) still heats a node beyond it
+//! (iterates beyond the bound are pulled back onto it, [`toward_bound`]:
+//! the first iterates run on the cold oil's viscous heat and overshoot
+//! steady states far below the bound), or (b) heat, the hottest node and the
 //! largest contact load all grow while the change between iterates does not
 //! shrink, for [`RUNAWAY_STREAK`] iterations in a row (the preload-heat
 //! loop diverging). `max_iterations` ends every run with
@@ -573,14 +576,38 @@ impl CoupledBearing {
             prev = Some(trend);
             last_state = Some(state);
             let next = anderson_step(&t, &g, history.as_ref(), lambda);
-            let f: Vec<f64> = g.iter().zip(&t).map(|(a, b)| a - b).collect();
-            history = Some((t, f));
             // Never let the extrapolation alone cross the lubricant bound.
-            t = if next.iter().any(|x| *x > lub.max_temperature_c) {
-                g
+            let next = if next.iter().any(|x| *x > lub.max_temperature_c) {
+                g.clone()
             } else {
                 next
             };
+            // An iterate beyond the bound is not yet a runaway: the first
+            // iterates run on the cold (thick) oil's viscous heat and can
+            // overshoot a steady state far below the bound. Step towards it
+            // only as far as the bound; a runaway is a bearing that, held at
+            // the bound, still heats a node beyond it.
+            let next = match toward_bound(&t, &next, lub.max_temperature_c) {
+                Some(n) => n,
+                None => {
+                    let (i, hot) =
+                        g.iter()
+                            .copied()
+                            .enumerate()
+                            .fold((0, f64::NEG_INFINITY), |b, (i, x)| if x > b.1 { (i, x) } else { b });
+                    return Err(Error::ThermalRunaway(format!(
+                        "at {speed_rpm} rpm node {} reached {hot:.1} C, above the highest temperature of \
+                         lubricant '{}' ({} C), from a state already at that limit; lower the speed or the \
+                         load, or use a lubricant rated hotter",
+                        self.network.network.nodes()[i].name,
+                        lub.name,
+                        lub.max_temperature_c
+                    )));
+                }
+            };
+            let f: Vec<f64> = g.iter().zip(&t).map(|(a, b)| a - b).collect();
+            history = Some((t, f));
+            t = next;
         }
         Err(Error::convergence(
             "coupled thermo-mechanical fixed point",
@@ -589,6 +616,28 @@ impl CoupledBearing {
             self.options.tolerance_k,
         ))
     }
+}
+
+/// The point of the segment from `t` to `next` where it leaves the
+/// temperatures at or below `bound` [C] (all of `next` when it stays
+/// below); `None` when `t` already sits at the bound and `next` goes beyond
+/// it (no step towards the bound is left).
+pub fn toward_bound(t: &[f64], next: &[f64], bound: f64) -> Option<Vec<f64>> {
+    let mut s: f64 = 1.0;
+    for (a, b) in t.iter().zip(next) {
+        if *b > bound {
+            s = s.min(((bound - a) / (b - a)).max(0.0));
+        }
+    }
+    if s <= 1e-12 {
+        return None;
+    }
+    Some(
+        t.iter()
+            .zip(next)
+            .map(|(a, b)| (a + s * (b - a)).min(bound.max(*a)))
+            .collect(),
+    )
 }
 
 /// One Anderson(1) mixing step (Walker & Ni, SIAM J. Numer. Anal. 49 (2011),
@@ -805,6 +854,18 @@ mod tests {
             Err(Error::ThermalRunaway(msg)) => assert!(msg.contains("lubricant") && msg.contains("node"), "{msg}"),
             other => panic!("expected a runaway, got {other:?}"),
         }
+    }
+
+    #[test]
+    fn step_towards_the_lubricant_bound_stops_on_it() {
+        // Linear path from t to next: node 1 crosses 200 C at a quarter.
+        let t = [50.0, 180.0];
+        let next = [90.0, 260.0];
+        let s = toward_bound(&t, &next, 200.0).unwrap();
+        assert!((s[0] - 60.0).abs() < 1e-12 && (s[1] - 200.0).abs() < 1e-12);
+        // Below the bound the step is untouched; at the bound none is left.
+        assert_eq!(toward_bound(&t, &[60.0, 190.0], 200.0).unwrap(), vec![60.0, 190.0]);
+        assert!(toward_bound(&[50.0, 200.0], &next, 200.0).is_none());
     }
 
     #[test]
