@@ -35,7 +35,12 @@
 //!
 //! A ball whose inner contact opens rides on the outer raceway under its
 //! centrifugal force; at zero speed (or without centrifugal force) a ball
-//! with an open gap is free and carries nothing. With inner-raceway control
+//! with an open gap is free and carries nothing. Without centrifugal force
+//! the friction couple against the gyroscopic moment is bounded by Coulomb
+//! friction (`friction_couple`, `SolveOptions::traction_coefficient`): a
+//! ball that just touches slides, bent by a_i - a_o = 2 atan(mu), and its
+//! loads grow from zero from the groove-centre distance
+//! `SpeedContext::onset_distance` on. With inner-raceway control
 //! the gyroscopic friction couple at the inner contact is kept whatever the
 //! inner load (Jones's hypothesis assumes enough friction); its moment
 //! about the groove centre (f_i Mg per ball) enters the ring moments.
