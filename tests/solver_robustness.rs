@@ -146,6 +146,13 @@ fn light_load_low_speed_6208_solves_and_tends_to_the_static_solution() {
     let stat = m.solve_static(&load.to_vector(), &o).unwrap();
     let qmax = |s: &thermobear::bearing::BearingState| s.balls.iter().map(|b| b.inner_load_n).fold(0.0, f64::max);
     let q_static = qmax(&stat);
+    // A ball rolling down the outer raceway onto the inner raceway's flank
+    // (contact edge, dQ/d(delta) = 0) stalled under 1 N + 6 N at 3..30 rpm.
+    for n in [3.0, 10.0, 30.0] {
+        let s = b.solve(BearingLoad::new(1.0, 6.0, 0.0), n, &o);
+        let s = s.unwrap_or_else(|e| panic!("1 N + 6 N at {n} rpm: {e:?}"));
+        assert!(s.residual <= o.tolerance);
+    }
     for n in [1.0, 3.0, 10.0, 30.0, 100.0] {
         let s = b.solve(load, n, &o).unwrap_or_else(|e| panic!("{n} rpm: {e:?}"));
         let (mut fx, mut fz) = (0.0, 0.0);

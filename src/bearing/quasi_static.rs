@@ -35,7 +35,12 @@
 //!
 //! A ball whose inner contact opens rides on the outer raceway under its
 //! centrifugal force; at zero speed (or without centrifugal force) a ball
-//! with an open gap is free and carries nothing. With inner-raceway control
+//! with an open gap is free and carries nothing. Without centrifugal force
+//! the friction couple against the gyroscopic moment is bounded by Coulomb
+//! friction (`friction_couple`, `SolveOptions::traction_coefficient`): a
+//! ball that just touches slides, bent by a_i - a_o = 2 atan(mu), and its
+//! loads grow from zero from the groove-centre distance
+//! `SpeedContext::onset_distance` on. With inner-raceway control
 //! the gyroscopic friction couple at the inner contact is kept whatever the
 //! inner load (Jones's hypothesis assumes enough friction); its moment
 //! about the groove centre (f_i Mg per ball) enters the ring moments.
@@ -378,17 +383,28 @@ fn ball_newton(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), x0: [f64; 2]
     } else {
         (Coords::Cartesian, Coords::Polar)
     };
-    newton_in(m, ctx, p, x0, first).or_else(|_| newton_in(m, ctx, p, x0, second))
+    newton_in(m, ctx, p, x0, first, false)
+        .or_else(|_| newton_in(m, ctx, p, x0, second, false))
+        .or_else(|_| newton_in(m, ctx, p, x0, first, true))
 }
 
 /// [`ball_newton`] in the given coordinates: step capped at half the
 /// ball-to-groove-centre distance, backtracking until the residual falls.
+///
+/// `anticipate`: a contact at its edge (|delta| below the approach
+/// delta* = (|r| / K)^(2/3) that would carry the residual force) has
+/// dQ/d(delta) = 0, so Newton steps run into it blindly and backtracking
+/// stalls there (a ball rolling down the outer raceway onto the inner
+/// raceway's flank). With `anticipate` the step is computed with that
+/// contact's stiffness at delta*, 1.5 K delta*^(1/2) along its normal
+/// (the residual and the converged state stay exact).
 fn newton_in(
     m: &BearingModel,
     ctx: &SpeedContext,
     p: (f64, f64),
     x0: [f64; 2],
     coords: Coords,
+    anticipate: bool,
 ) -> Result<([f64; 2], BallTerms)> {
     let mut u = coords.coordinates(x0);
     let mut x = x0;
@@ -406,6 +422,10 @@ fn newton_in(
         if rn <= tol {
             converged = true;
             break;
+        }
+        let mut jx = jx;
+        if anticipate {
+            anticipate_contacts(m, p, x, &t, rn, &mut jx);
         }
         // d r / du = d r / dx * d x / du.
         let dxu = coords.dx_du(u);
@@ -458,6 +478,32 @@ fn newton_in(
         return Err(Error::convergence("ball equilibrium (A-15)", it, norm(&t), tol));
     }
     Ok((x, t))
+}
+
+/// Add to d r / dx the stiffness of the contacts at their edge (see
+/// [`newton_in`]): the inner contact enters r as +Q_i n_i with
+/// d(delta_i)/dx = -n_i, the outer one as -Q_o n_o with d(delta_o)/dx = n_o;
+/// both add -k n n^T.
+fn anticipate_contacts(m: &BearingModel, p: (f64, f64), x: [f64; 2], t: &BallTerms, rn: f64, jx: &mut [[f64; 2]; 2]) {
+    let unit = |v: [f64; 2]| {
+        let l = v[0].hypot(v[1]);
+        [v[0] / l, v[1] / l]
+    };
+    let ni = unit([p.0 - x[0], p.1 - x[1]]);
+    let no = unit(x);
+    let ki = m.inner.k(Dual::<1>::cst(ni[1])).v;
+    let ko = m.outer.k(Dual::<1>::cst(no[1])).v;
+    for (dl, n, k) in [(t.dli, ni, ki), (t.dlo, no, ko)] {
+        let dstar = (rn / k).powf(2.0 / 3.0);
+        if dl.abs() < dstar {
+            let kv = 1.5 * k * dstar.sqrt();
+            for r in 0..2 {
+                for c in 0..2 {
+                    jx[r][c] -= kv * n[r] * n[c];
+                }
+            }
+        }
+    }
 }
 
 /// Force residual that a ball position known to round-off produces [N]:
