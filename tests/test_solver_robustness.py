@@ -12,7 +12,7 @@ import thermobear as tb
 from thermobear.thermal import THERMAL_EFFECTS, thermal_stiffness_curve
 
 # UMP is a rotor effect: always off for a bare bearing.
-BASE = [n for n in tb.effects()["name"].to_list() if n != "unbalanced_magnetic_pull"]
+BASE = [n for n in tb.effects("switch")["name"].to_list() if n != "unbalanced_magnetic_pull"]
 DROPPED = [
     "centrifugal_force",
     "gyroscopic_moment",
