@@ -21,7 +21,20 @@ Pipeline of :func:`diagnose`:
    and excluding the null value, no rival within delta-BIC 2 (else a tie
    set). Accepted effects join the baseline and the screening repeats while
    the reduced chi^2 of the training residual fails the chi^2 test at 1 %;
-5. a verdict; 6. the held-out gap before/after per quantity and speed band.
+5. a verdict that says what each accepted candidate is: a missing effect
+   (a registry switch or a term the baseline leaves out), a miscalibrated
+   baseline input (f0, spin friction coefficient, cooling and ambient
+   temperatures, housing material), or a measurement-side sensor offset;
+   a tie set; "no missing effect supported"; or "structured residual not
+   explained by any known effect";
+6. the held-out gap before/after per quantity and speed band.
+
+Model specs: :class:`BearingModelSpec` (one bearing, quantities
+:data:`QUANTITIES`) and :class:`thermobear.SpindleModelSpec` (the seed B
+spindle with its rotor) follow one protocol -- ``quantities``,
+``candidate_list(quantities)``, ``predict(conditions)``,
+``with_setting(add_effects, **options)``, ``options``, ``effects`` -- and
+:func:`diagnose` runs the same statistics on either.
 
 Speed: every model configuration (effects + options + parameter value) is
 evaluated once on the measured conditions and cached in the
