@@ -45,18 +45,12 @@ def main() -> None:
         }
     )
     truth = D.BearingModelSpec(b, effects=base_eff, churning_oil_fraction=0.01)
-    allq = truth.predict(cond)
-    q = cond["quantity"].to_list()
-    val = np.array([allq[qq][i] for i, qq in enumerate(q)])
-    sig = np.array([0.3 if qq.startswith("temp") else 0.01 * v for qq, v in zip(q, val)])
     table = tb.candidates(D.BearingModelSpec(b, effects=base_eff), qs)
     names = table.filter(pl.col("affects") != D._NOT_IN_BEARING)["name"].to_list()[:10]
     spec = D.BearingModelSpec(b, effects=base_eff)
     for label in ("cold", "warm"):
-        rng = np.random.default_rng(0 if label == "cold" else 1)
-        meas = cond.with_columns(
-            pl.Series("value", val + rng.normal(size=len(val)) * sig), pl.Series("sigma", sig)
-        )
+        # half the typical noise; the warm run gets new noise on the same conditions
+        meas = D.synthetic_measurements(truth, cond, 0.5, seed=0 if label == "cold" else 1)
         t0 = time.perf_counter()
         d = tb.diagnose(spec, meas, candidates=names)
         dt = time.perf_counter() - t0
@@ -87,14 +81,7 @@ def spindle() -> None:
         )
         for p in (250.0, 400.0)
     )
-    allq = full.predict(cond)
-    val = np.array([allq[q][i] for i, q in enumerate(cond["quantity"].to_list())])
-    sig = np.array([SPINDLE_QUANTITIES[q][3] for q in cond["quantity"].to_list()])
-    sig = np.where([SPINDLE_QUANTITIES[q][4] for q in cond["quantity"]], sig * np.abs(val), sig)
-    meas = cond.with_columns(
-        pl.Series("value", val + np.random.default_rng(0).normal(size=len(val)) * sig),
-        pl.Series("sigma", sig),
-    )
+    meas = D.synthetic_measurements(full, cond, 1.0, seed=0)
     t0 = time.perf_counter()
     d = tb.diagnose(base, meas)
     n = len(d.screening[0])

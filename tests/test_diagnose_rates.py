@@ -75,31 +75,16 @@ def _conditions() -> pl.DataFrame:
     )
 
 
-def _truth(spec: D.BearingModelSpec) -> tuple[pl.DataFrame, np.ndarray]:
-    cond = _conditions()
-    p = spec.predict(cond)
-    q = cond["quantity"].to_list()
-    return cond, np.array([p[qq][i] for i, qq in enumerate(q)])
-
-
-def _measured(cond, value, noise: float, seed: int) -> pl.DataFrame:
-    q = cond["quantity"].to_list()
-    typ = np.array([D.QUANTITIES[qq][3] for qq in q])
-    rel = np.array([D.QUANTITIES[qq][4] for qq in q])
-    sig = noise * np.where(rel, typ * np.abs(value), typ)
-    rng = np.random.default_rng(seed)
-    return cond.with_columns(
-        pl.Series("value", value + rng.normal(size=len(value)) * sig), pl.Series("sigma", sig)
-    )
-
-
 def _named(d) -> list[str]:
     return [a["name"] for a in d.accepted]
 
 
 def _runs(baseline, truth, noise, seeds=SEEDS):
-    cond, value = _truth(truth)
-    return [tb.diagnose(baseline, _measured(cond, value, noise, s), suggest=False) for s in seeds]
+    cond = _conditions()
+    return [
+        tb.diagnose(baseline, D.synthetic_measurements(truth, cond, noise, s), suggest=False)
+        for s in seeds
+    ]
 
 
 def _gap_closed(d) -> bool:

@@ -23,6 +23,7 @@ import polars as pl
 import pytest
 
 import thermobear as tb
+from thermobear.diagnosis import synthetic_measurements
 from thermobear.diagnosis_spindle import SPINDLE_QUANTITIES, SpindleModelSpec
 
 SPEEDS_RPM = np.arange(6000.0, 18001.0, 2000.0)
@@ -61,26 +62,12 @@ def _conditions() -> pl.DataFrame:
     )
 
 
-def _truth(spec):
-    cond = _conditions()
-    p = spec.predict(cond.rename({"preload_n": "axial_n"}))
-    return cond, np.array([p[q][i] for i, q in enumerate(cond["quantity"].to_list())])
-
-
 def _runs(baseline, truth, noise, seeds):
-    cond, value = _truth(truth)
-    q = cond["quantity"].to_list()
-    typ = np.array([SPINDLE_QUANTITIES[qq][3] for qq in q])
-    rel = np.array([SPINDLE_QUANTITIES[qq][4] for qq in q])
-    sig = noise * np.where(rel, typ * np.abs(value), typ)
-    out = []
-    for s in seeds:
-        rng = np.random.default_rng(s)
-        m = cond.with_columns(
-            pl.Series("value", value + rng.normal(size=len(value)) * sig), pl.Series("sigma", sig)
-        )
-        out.append(tb.diagnose(baseline, m, suggest=False))
-    return out
+    cond = _conditions()
+    return [
+        tb.diagnose(baseline, synthetic_measurements(truth, cond, noise, s), suggest=False)
+        for s in seeds
+    ]
 
 
 def _named(d) -> list[str]:

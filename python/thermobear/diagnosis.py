@@ -61,6 +61,8 @@ __all__ = [
     "candidates",
     "diagnose",
     "load_measurements",
+    "synthetic_measurements",
+    "typical_sigma",
 ]
 
 #: Supported measured quantities: model column, scale to the quantity's
@@ -270,15 +272,47 @@ def load_measurements(data: Any, quantities: Optional[dict] = None) -> "polars.D
         if (df["sigma"] <= 0).any():
             raise DataError(f"invalid sigma = {df['sigma'].min()}: must be > 0")
     else:
-        typ = [table[q][3] for q in df["quantity"].to_list()]
-        rel = [table[q][4] for q in df["quantity"].to_list()]
-        v = df["value"].to_numpy()
-        s = np.where(rel, np.abs(v) * np.asarray(typ), np.asarray(typ))
+        s = typical_sigma(table, df["quantity"].to_list(), df["value"].to_numpy())
         df = df.with_columns(pl.Series("sigma", s))
     if "run" not in df.columns:
         df = df.with_columns(pl.lit("1").alias("run"))
     df = df.with_columns(pl.col("run").cast(pl.Utf8))
     return df.select(["speed_rpm", "axial_n", "radial_n", "quantity", "value", "sigma", "run"])
+
+
+def typical_sigma(table: dict, quantities: Sequence[str], values: np.ndarray) -> np.ndarray:
+    """Typical measurement uncertainty of each value, from a quantity
+    registry (``table[q][3]``: absolute, or relative when ``table[q][4]``)."""
+    typ = np.array([table[q][3] for q in quantities], dtype=float)
+    rel = np.array([table[q][4] for q in quantities], dtype=bool)
+    return np.where(rel, typ * np.abs(np.asarray(values, dtype=float)), typ)
+
+
+def synthetic_measurements(
+    truth: Any,
+    conditions: "polars.DataFrame",
+    noise: float = 1.0,
+    seed: int = 0,  # noqa: F821
+) -> "polars.DataFrame":  # noqa: F821
+    """Synthetic "measurements" for testing a diagnosis: ``truth``'s
+    prediction of each row of ``conditions`` (operating columns and
+    ``quantity``; ``preload_n`` may stand for ``axial_n``) plus Gaussian
+    noise of ``noise`` times the quantity's typical uncertainty
+    (:func:`typical_sigma` over ``truth.quantities``), with that sigma as
+    the ``sigma`` column; reproducible by ``seed``."""
+    import polars as pl
+
+    cond = conditions
+    if "preload_n" in cond.columns:
+        cond = cond.rename({"preload_n": "axial_n"})
+    p = truth.predict(cond)
+    q = conditions["quantity"].to_list()
+    value = np.array([p[qq][i] for i, qq in enumerate(q)])
+    sig = noise * typical_sigma(truth.quantities, q, value)
+    rng = np.random.default_rng(seed)
+    return conditions.with_columns(
+        pl.Series("value", value + rng.normal(size=len(value)) * sig), pl.Series("sigma", sig)
+    )
 
 
 # --------------------------------------------------------------------------

@@ -31,7 +31,7 @@ def study_diagnose(out: Path, quick: bool) -> list[Path]:
     import polars as pl
 
     from . import plot
-    from .diagnosis import BearingModelSpec, diagnose
+    from .diagnosis import BearingModelSpec, diagnose, synthetic_measurements
 
     bearing = Bearing.preset("7008C")
     baseline = BearingModelSpec(bearing)
@@ -53,15 +53,8 @@ def study_diagnose(out: Path, quick: bool) -> list[Path]:
             "quantity": qs * len(speeds),
         }
     )
-    allq = truth.predict(cond)
-    q = cond["quantity"].to_list()
-    val = np.array([allq[qq][i] for i, qq in enumerate(q)])
-    # typical uncertainties (thermobear.diagnosis.QUANTITIES)
-    sig = np.array([0.5 if qq.startswith("temperature") else 0.02 * v for qq, v in zip(q, val)])
-    rng = np.random.default_rng(20260601)
-    measured = cond.with_columns(
-        pl.Series("value", val + rng.normal(size=len(val)) * sig), pl.Series("sigma", sig)
-    )
+    # typical uncertainties (thermobear.diagnosis.QUANTITIES), a fixed seed
+    measured = synthetic_measurements(truth, cond, 1.0, seed=20260601)
     d = diagnose(baseline, measured)
     files = write_table(measured, out, "diagnose_synthetic_measured")
     files += write_table(d.audit, out, "diagnose_synthetic_audit")

@@ -136,7 +136,7 @@ def synthetic_seed_b(base: SpindleModelSpec, out: Path, quick: bool) -> list[Pat
     import polars as pl
 
     from . import plot
-    from .diagnosis_spindle import SPINDLE_QUANTITIES
+    from .diagnosis import synthetic_measurements
 
     truth = base.with_setting(["thermal_displacement"])
     speeds = np.arange(6000.0, 18001.0, 3000.0 if quick else 1000.0)
@@ -149,16 +149,8 @@ def synthetic_seed_b(base: SpindleModelSpec, out: Path, quick: bool) -> list[Pat
             "quantity": qs * len(speeds),
         }
     )
-    p = truth.predict(cond)
-    q = cond["quantity"].to_list()
-    val = np.array([p[qq][i] for i, qq in enumerate(q)])
-    typ = np.array([SPINDLE_QUANTITIES[qq][3] for qq in q])
-    rel = np.array([SPINDLE_QUANTITIES[qq][4] for qq in q])
-    sig = np.where(rel, typ * np.abs(val), typ)
-    rng = np.random.default_rng(20261122)
-    measured = cond.with_columns(
-        pl.Series("value", val + rng.normal(size=len(val)) * sig), pl.Series("sigma", sig)
-    )
+    # typical noise (SPINDLE_QUANTITIES), a fixed seed
+    measured = synthetic_measurements(truth, cond, 1.0, seed=20261122)
     d = diagnose_spindle(base, measured)
     files = write_table(measured, out, "diagnose_seed_b_synthetic_measured")
     files += write_table(d.gap, out, "diagnose_seed_b_synthetic_gap")
