@@ -377,18 +377,20 @@ impl Coords {
 /// with polar coordinates when the inner contact is open at `x0`, with
 /// Cartesian ones otherwise, and try the other on failure.
 fn ball_newton(m: &BearingModel, ctx: &SpeedContext, p: (f64, f64), x0: [f64; 2]) -> Result<([f64; 2], BallTerms)> {
-    let riding = ball_terms(m, ctx, x0, p).qi == 0.0;
-    let (first, second) = if riding {
+    // The terms at the start serve both the choice and the first iterate.
+    let t0 = ball_terms(m, ctx, x0, p);
+    let (first, second) = if t0.qi == 0.0 {
         (Coords::Polar, Coords::Cartesian)
     } else {
         (Coords::Cartesian, Coords::Polar)
     };
-    newton_in(m, ctx, p, x0, first, false)
-        .or_else(|_| newton_in(m, ctx, p, x0, second, false))
-        .or_else(|_| newton_in(m, ctx, p, x0, first, true))
+    newton_in(m, ctx, p, x0, t0, first, false)
+        .or_else(|_| newton_in(m, ctx, p, x0, t0, second, false))
+        .or_else(|_| newton_in(m, ctx, p, x0, t0, first, true))
 }
 
-/// [`ball_newton`] in the given coordinates: step capped at half the
+/// [`ball_newton`] in the given coordinates from `x0` (with its terms
+/// `t0`): step capped at half the
 /// ball-to-groove-centre distance, backtracking until the residual falls.
 ///
 /// `anticipate`: a contact at its edge (|delta| below the approach
@@ -403,13 +405,14 @@ fn newton_in(
     ctx: &SpeedContext,
     p: (f64, f64),
     x0: [f64; 2],
+    t0: BallTerms,
     coords: Coords,
     anticipate: bool,
 ) -> Result<([f64; 2], BallTerms)> {
     let mut u = coords.coordinates(x0);
     let mut x = x0;
     let norm = |t: &BallTerms| t.r_ax.v.abs().max(t.r_rad.v.abs());
-    let mut t = ball_terms(m, ctx, x, p);
+    let mut t = t0;
     let mut converged = false;
     let mut it = 0;
     let mut tol = 0.0;
