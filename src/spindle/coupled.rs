@@ -327,13 +327,16 @@ impl Spindle {
         Ok(s)
     }
 
-    /// Radial loads on the front and rear pairs from the nose load (lever rule).
-    pub fn pair_radial_loads_n(&self) -> (f64, f64) {
+    /// Radial loads on the front and rear pairs from the nose load, along x
+    /// (lever rule with the load at c = -a in front of the front pair,
+    /// [`super::shaft_loads::lever_rule_n`]: front F (1 + a/L), rear -F a/L) [N].
+    pub fn pair_radial_loads_n(&self) -> Result<(f64, f64)> {
         let p = &self.config.params;
-        let l = p.front_span_m + p.rear_span_m;
-        let a = p.nose_length_m;
-        let f = self.config.radial_load_n;
-        (f * (1.0 + a / l), -f * a / l)
+        super::shaft_loads::lever_rule_n(
+            self.config.radial_load_n,
+            -p.nose_length_m,
+            p.front_span_m + p.rear_span_m,
+        )
     }
 
     /// Static unbalanced magnetic pull on the shaft, along +y [N]: the
@@ -361,7 +364,7 @@ impl Spindle {
     /// centres: the nose load along x ([`Self::pair_radial_loads_n`]) and
     /// the magnetic pull along y ([`Self::pair_magnetic_pull_n`]) (N, N m).
     pub fn pair_loads_n_nm(&self) -> Result<([f64; 5], [f64; 5])> {
-        let (xf, xr) = self.pair_radial_loads_n();
+        let (xf, xr) = self.pair_radial_loads_n()?;
         let (yf, yr) = self.pair_magnetic_pull_n()?;
         Ok(([xf, yf, 0.0, 0.0, 0.0], [xr, yr, 0.0, 0.0, 0.0]))
     }
