@@ -290,9 +290,9 @@ def typical_sigma(table: dict, quantities: Sequence[str], values: np.ndarray) ->
 
 def synthetic_measurements(
     truth: Any,
-    conditions: "polars.DataFrame",
+    conditions: "polars.DataFrame",  # noqa: F821
     noise: float = 1.0,
-    seed: int = 0,  # noqa: F821
+    seed: int = 0,
 ) -> "polars.DataFrame":  # noqa: F821
     """Synthetic "measurements" for testing a diagnosis: ``truth``'s
     prediction of each row of ``conditions`` (operating columns and
