@@ -1,4 +1,4 @@
-//! Hertz point contact between a ball and a raceway (PHYSICS.md section 2;
+//! Hertz point contact between a ball and a raceway (docs/concepts/physics.md §2;
 //! Harris & Kotzalas, Rolling Bearing Analysis, ch. 6; Hamrock & Brewe,
 //! J. Lubr. Technol. 105 (1983) for the closed forms).
 //!
@@ -13,7 +13,11 @@ use crate::error::{Error, Result};
 /// Which raceway a ball touches.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Raceway {
+    /// Inner-ring raceway: convex in the rolling direction, so its rolling
+    /// curvature adds to the ball's.
     Inner,
+    /// Outer-ring raceway: concave in the rolling direction, so its rolling
+    /// curvature is negative.
     Outer,
 }
 
@@ -50,15 +54,15 @@ pub struct Curvature {
     pub sum: f64,
     /// Curvature difference F(rho) [-], 0 <= F < 1.
     pub difference: f64,
-    /// Effective radius in the rolling direction Rx [m].
+    /// Effective radius in the rolling direction Rx \[m\].
     pub rx: f64,
-    /// Effective radius across the rolling direction Ry [m].
+    /// Effective radius across the rolling direction Ry \[m\].
     pub ry: f64,
 }
 
 /// Curvature of a ball of diameter `d` on the `raceway` of a bearing with
 /// pitch diameter `dm`, groove conformity `f` (groove radius = f d) and
-/// contact angle `alpha` (PHYSICS.md section 2).
+/// contact angle `alpha` (docs/concepts/physics.md §2).
 pub fn curvature(raceway: Raceway, d: f64, dm: f64, f: f64, alpha: f64) -> Curvature {
     let gamma = d * alpha.cos() / dm;
     let rho_ball = 2.0 / d;
@@ -163,9 +167,12 @@ pub fn ellipse(c: &Curvature) -> Result<Ellipse> {
 /// A solved Hertz contact geometry: everything that does not depend on load.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HertzContact {
+    /// Curvature sum and difference of the ball-raceway pair.
     pub curvature: Curvature,
+    /// Ellipticity kappa and elliptic integrals: exact ([`HertzContact::new`])
+    /// or Hamrock-Brewe ([`HertzContact::approximate`]).
     pub ellipse: Ellipse,
-    /// Reduced modulus E' = 2 / ((1-nu1^2)/E1 + (1-nu2^2)/E2) [Pa].
+    /// Reduced modulus E' = 2 / ((1-nu1^2)/E1 + (1-nu2^2)/E2) \[Pa\].
     pub reduced_modulus_pa: f64,
     /// Load-deflection constant K in Q = K delta^1.5 [N/m^1.5].
     pub k_load_deflection: f64,
@@ -198,7 +205,7 @@ impl HertzContact {
             k_first,
             e_second,
         } = ellipse;
-        // K = (pi kappa E' / 3) sqrt(2 E / (F^3 sum rho))   (PHYSICS.md 2, A-1)
+        // K = (pi kappa E' / 3) sqrt(2 E / (F^3 sum rho))   (docs/concepts/physics.md §2, A-1)
         let k = PI * kappa * ep / 3.0 * (2.0 * e_second / (k_first.powi(3) * curvature.sum)).sqrt();
         HertzContact {
             curvature,
@@ -208,7 +215,7 @@ impl HertzContact {
         }
     }
 
-    /// Normal load for an approach delta [N]; zero when delta <= 0.
+    /// Normal load for an approach delta \[N\]; zero when delta <= 0.
     #[inline]
     pub fn load(&self, delta: f64) -> f64 {
         if delta > 0.0 {
@@ -218,7 +225,7 @@ impl HertzContact {
         }
     }
 
-    /// Approach for a load Q [m].
+    /// Approach for a load Q \[m\].
     #[inline]
     pub fn deflection(&self, q: f64) -> f64 {
         if q > 0.0 {
@@ -238,19 +245,19 @@ impl HertzContact {
         }
     }
 
-    /// Semi-major axis a of the contact ellipse under load Q [m]:
+    /// Semi-major axis a of the contact ellipse under load Q \[m\]:
     /// a = (6 kappa^2 E Q / (pi sum rho E'))^(1/3).
     pub fn semi_major(&self, q: f64) -> f64 {
         let Ellipse { kappa, e_second, .. } = self.ellipse;
         (6.0 * kappa * kappa * e_second * q.max(0.0) / (PI * self.curvature.sum * self.reduced_modulus_pa)).cbrt()
     }
 
-    /// Semi-minor axis b = a / kappa [m].
+    /// Semi-minor axis b = a / kappa \[m\].
     pub fn semi_minor(&self, q: f64) -> f64 {
         self.semi_major(q) / self.ellipse.kappa
     }
 
-    /// Maximum contact pressure p0 = 3 Q / (2 pi a b) [Pa].
+    /// Maximum contact pressure p0 = 3 Q / (2 pi a b) \[Pa\].
     pub fn max_pressure(&self, q: f64) -> f64 {
         let a = self.semi_major(q);
         if a <= 0.0 {

@@ -10,7 +10,9 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 /// A value `v` and its gradient `d` with respect to N independent variables.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Dual<const N: usize> {
+    /// Function value.
     pub v: f64,
+    /// Partial derivatives dv/dx_i with respect to the N independent variables.
     pub d: [f64; N],
 }
 
@@ -44,6 +46,8 @@ impl<const N: usize> Dual<N> {
         Dual { v: f, d }
     }
 
+    /// Square root, derivative 1 / (2 sqrt v); the gradient is set to zero
+    /// where sqrt v is not positive (no infinite slope at v = 0).
     #[inline]
     pub fn sqrt(self) -> Self {
         let s = self.v.sqrt();
@@ -61,29 +65,34 @@ impl<const N: usize> Dual<N> {
         }
     }
 
+    /// Natural logarithm, derivative 1 / v (v > 0).
     #[inline]
     pub fn ln(self) -> Self {
         self.chain(self.v.ln(), 1.0 / self.v)
     }
 
+    /// Real power v^p, derivative p v^(p - 1).
     #[inline]
     pub fn powf(self, p: f64) -> Self {
         let f = self.v.powf(p);
         self.chain(f, p * self.v.powf(p - 1.0))
     }
 
+    /// Exponential e^v, derivative e^v.
     #[inline]
     pub fn exp(self) -> Self {
         let e = self.v.exp();
         self.chain(e, e)
     }
 
+    /// Reciprocal 1 / v, derivative -1 / v^2.
     #[inline]
     pub fn recip(self) -> Self {
         let r = 1.0 / self.v;
         self.chain(r, -r * r)
     }
 
+    /// Integer power v^n, derivative n v^(n - 1).
     #[inline]
     pub fn powi(self, n: i32) -> Self {
         let p = self.v.powi(n);

@@ -1,4 +1,4 @@
-//! Ball-bearing internal geometry (PHYSICS.md section 3; Harris & Kotzalas
+//! Ball-bearing internal geometry (docs/concepts/physics.md §3; Harris & Kotzalas
 //! ch. 2). Lengths in metres, angles in radians.
 
 use crate::error::{in_range, non_negative, positive, Error, Result};
@@ -6,11 +6,17 @@ use crate::error::{in_range, non_negative, positive, Error, Result};
 /// Deep-groove (radial) or angular-contact ball bearing.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum BearingType {
+    /// Deep-groove (radial) bearing, e.g. 6208: the free contact angle
+    /// follows from the diametral clearance ([`BearingGeometry::deep_groove`]).
     DeepGroove,
+    /// Angular-contact bearing, e.g. 7009C: given free contact angle, the
+    /// clearance that produces it is derived ([`BearingGeometry::angular_contact`]).
     AngularContact,
 }
 
 impl BearingType {
+    /// Lower-case name for reports and configuration output:
+    /// `"deep-groove"` or `"angular-contact"`.
     pub fn name(self) -> &'static str {
         match self {
             BearingType::DeepGroove => "deep-groove",
@@ -22,27 +28,28 @@ impl BearingType {
 /// Internal geometry of one ball bearing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BearingGeometry {
+    /// Deep-groove or angular-contact; set by the constructor used.
     pub bearing_type: BearingType,
     /// Number of balls Z.
     pub ball_count: usize,
-    /// Ball diameter D [m].
+    /// Ball diameter D \[m\].
     pub ball_diameter_m: f64,
-    /// Pitch diameter dm [m].
+    /// Pitch diameter dm \[m\].
     pub pitch_diameter_m: f64,
     /// Inner groove conformity f_i = r_i / D (> 0.5).
     pub inner_conformity: f64,
     /// Outer groove conformity f_o = r_o / D (> 0.5).
     pub outer_conformity: f64,
-    /// Diametral clearance Pd [m]; for an angular-contact bearing the
+    /// Diametral clearance Pd \[m\]; for an angular-contact bearing the
     /// clearance that produces its free contact angle.
     pub diametral_clearance_m: f64,
-    /// Free (unloaded) contact angle alpha0 [rad], from cos alpha0 = 1 - Pd / (2 A).
+    /// Free (unloaded) contact angle alpha0 \[rad\], from cos alpha0 = 1 - Pd / (2 A).
     pub free_contact_angle_rad: f64,
-    /// Bore d [m].
+    /// Bore d \[m\].
     pub bore_m: f64,
-    /// Outside diameter D_o [m].
+    /// Outside diameter D_o \[m\].
     pub outer_diameter_m: f64,
-    /// Width B [m].
+    /// Width B \[m\].
     pub width_m: f64,
 }
 
@@ -202,7 +209,7 @@ impl BearingGeometry {
     }
 
     /// Distance between the groove curvature centres at zero load,
-    /// A = (f_i + f_o - 1) D = B_f D [m].
+    /// A = (f_i + f_o - 1) D = B_f D \[m\].
     #[inline]
     pub fn curvature_centre_distance_m(&self) -> f64 {
         (self.inner_conformity + self.outer_conformity - 1.0) * self.ball_diameter_m
@@ -214,18 +221,18 @@ impl BearingGeometry {
         self.inner_conformity + self.outer_conformity - 1.0
     }
 
-    /// Inner raceway groove-bottom diameter d_i = dm - D - Pd/2 [m].
+    /// Inner raceway groove-bottom diameter d_i = dm - D - Pd/2 \[m\].
     pub fn inner_raceway_diameter_m(&self) -> f64 {
         self.pitch_diameter_m - self.ball_diameter_m - 0.5 * self.diametral_clearance_m
     }
 
-    /// Outer raceway groove-bottom diameter d_o = dm + D + Pd/2 [m].
+    /// Outer raceway groove-bottom diameter d_o = dm + D + Pd/2 \[m\].
     pub fn outer_raceway_diameter_m(&self) -> f64 {
         self.pitch_diameter_m + self.ball_diameter_m + 0.5 * self.diametral_clearance_m
     }
 
     /// Radius of the locus of inner-groove curvature centres,
-    /// R_i = dm/2 + (f_i - 0.5) D cos alpha0 (used with tilt, A-11) [m].
+    /// R_i = dm/2 + (f_i - 0.5) D cos alpha0 (used with tilt, A-11) \[m\].
     pub fn inner_groove_centre_radius_m(&self) -> f64 {
         0.5 * self.pitch_diameter_m
             + (self.inner_conformity - 0.5) * self.ball_diameter_m * self.free_contact_angle_rad.cos()

@@ -49,9 +49,9 @@
 //! Q_i cos a_i - Q_o cos a_o - (Mg/D)(lambda_i sin a_i - lambda_o sin a_o) + Fc = 0
 //! ```
 //!
-//! which is the opposite sign of the friction terms printed in PHYSICS.md
-//! (A-15) and in Harris's form; [`super::GyroCoupleSign::Reversed`] selects
-//! that printed form. The test `friction_couple_opposes_gyroscopic_moment`
+//! which is the opposite sign of the friction terms printed in
+//! docs/concepts/physics.md §3, (A-15) and in Harris's form;
+//! [`super::GyroCoupleSign::Reversed`] selects that printed form. The test `friction_couple_opposes_gyroscopic_moment`
 //! checks the moment balance with vectors.
 
 use super::dual::Dual;
@@ -106,7 +106,7 @@ pub struct BallKinematics {
     pub orbit_speed_rad_s: f64,
     /// Ball speed about its own axis relative to the cage, omega_b = |w| [rad/s].
     pub spin_speed_rad_s: f64,
-    /// Attitude angle beta of the ball axis from the bearing axis [rad] (A-19).
+    /// Attitude angle beta of the ball axis from the bearing axis \[rad\] (A-19).
     pub attitude_angle_rad: f64,
     /// Ball angular velocity along the bearing axis, cage frame [rad/s].
     pub spin_axial_rad_s: f64,

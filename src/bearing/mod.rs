@@ -55,14 +55,23 @@ pub use sweep::{speed_sweep, stiffness_curve, StiffnessPoint};
 /// shaft it sits on (needed for centrifugal expansion, A-10).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Bearing {
+    /// Designation, e.g. `6208` or `7009C-hybrid` (the preset name).
     pub name: String,
+    /// Internal geometry: ball set, pitch diameter, conformities, clearance,
+    /// free contact angle and boundary dimensions.
     pub geometry: BearingGeometry,
+    /// Inner-ring material: inner Hertz contact, centrifugal expansion of
+    /// the ring and its thermal properties in the heat model.
     pub inner_ring: Material,
+    /// Outer-ring material: outer Hertz contact and its thermal properties in
+    /// the heat model.
     pub outer_ring: Material,
+    /// Ball material (bearing steel or Si3N4): both Hertz contacts, ball
+    /// mass and inertia (density), ball conduction in the heat model.
     pub ball: Material,
     /// Shaft material (the inner ring is fitted on it).
     pub shaft: Material,
-    /// Shaft bore diameter [m]; 0 for a solid shaft.
+    /// Shaft bore diameter \[m\]; 0 for a solid shaft.
     pub shaft_bore_m: f64,
 }
 
@@ -102,7 +111,7 @@ impl Bearing {
         Ok(())
     }
 
-    /// Hertz contact of a ball on the inner raceway at contact angle `alpha` [rad].
+    /// Hertz contact of a ball on the inner raceway at contact angle `alpha` \[rad\].
     pub fn inner_contact(&self, alpha: f64) -> Result<HertzContact> {
         let g = &self.geometry;
         let c = contact::curvature(
@@ -115,7 +124,7 @@ impl Bearing {
         HertzContact::new(c, reduced_modulus(&self.ball, &self.inner_ring))
     }
 
-    /// Hertz contact of a ball on the outer raceway at contact angle `alpha` [rad].
+    /// Hertz contact of a ball on the outer raceway at contact angle `alpha` \[rad\].
     pub fn outer_contact(&self, alpha: f64) -> Result<HertzContact> {
         let g = &self.geometry;
         let c = contact::curvature(
@@ -137,7 +146,7 @@ impl Bearing {
         ))
     }
 
-    /// Ball mass m = rho pi D^3 / 6 [kg].
+    /// Ball mass m = rho pi D^3 / 6 \[kg\].
     pub fn ball_mass_kg(&self) -> f64 {
         self.ball.density_kg_m3 * PI * self.geometry.ball_diameter_m.powi(3) / 6.0
     }
@@ -147,7 +156,8 @@ impl Bearing {
         self.ball.density_kg_m3 * PI * self.geometry.ball_diameter_m.powi(5) / 60.0
     }
 
-    /// "steel", "hybrid" (ceramic balls on steel rings) or "ceramic".
+    /// "steel", "hybrid" (ceramic balls on steel rings) or "ceramic";
+    /// "custom" for ceramic rings with steel balls.
     pub fn material_class(&self) -> &'static str {
         let ceramic = |m: &Material| m.name.eq_ignore_ascii_case("si3n4");
         match (

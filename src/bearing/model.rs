@@ -9,7 +9,7 @@
 //! measured from the concentric position with both groove curvature centres
 //! of every ball in one radial plane, so taking up the clearance is part of
 //! the displacement. At ball j the inner-to-outer groove-centre distance has
-//! the components (PHYSICS.md 3, A-5, A-11, A-38)
+//! the components (docs/concepts/physics.md §3, A-5, A-11, A-38)
 //!
 //! ```text
 //! A1j = dz + R_i (theta_x sin psi_j - theta_y cos psi_j) + u_Ta          (axial)
@@ -243,7 +243,7 @@ impl BearingModel {
     }
 
     /// Radial growth of the inner raceway of the ring rotating at
-    /// `speed_rad_s` (A-10) [m]. See [`inner_ring_expansion_per_omega2`].
+    /// `speed_rad_s` (A-10) \[m\]. See [`inner_ring_expansion_per_omega2`].
     pub fn ring_expansion_m(&self, speed_rad_s: f64) -> f64 {
         self.expansion_m_s2 * speed_rad_s * speed_rad_s
     }
@@ -291,9 +291,9 @@ impl BearingModel {
 /// values act like a positive dz and a positive radial approach.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct RacewayOffsets {
-    /// Axial offset u_Ta [m].
+    /// Axial offset u_Ta \[m\].
     pub axial_m: f64,
-    /// Radial offset u_Tr (closes the clearance when positive) [m].
+    /// Radial offset u_Tr (closes the clearance when positive) \[m\].
     pub radial_m: f64,
 }
 

@@ -33,8 +33,9 @@ pub enum GyroCoupleSign {
     /// ball's angular momentum (moment balance about the ball centre).
     #[default]
     Derived,
-    /// The opposite sign, as printed in PHYSICS.md A-15 (Harris's form
-    /// `- (Mg/D)(lambda_i cos a_i - lambda_o cos a_o)` in the axial balance).
+    /// The opposite sign, as printed in docs/concepts/physics.md §3, (A-15)
+    /// (Harris's form `- (Mg/D)(lambda_i cos a_i - lambda_o cos a_o)` in the
+    /// axial balance).
     Reversed,
 }
 
@@ -57,7 +58,12 @@ pub enum Tilt {
     /// The tilts are held at the given values (a ring held by a stiff shaft
     /// and housing, the usual 3-DOF bearing model); the applied moments are
     /// ignored and the state reports the moments needed to hold the tilt.
-    Fixed { theta_x_rad: f64, theta_y_rad: f64 },
+    Fixed {
+        /// Held inner-ring tilt about the x axis \[rad\].
+        theta_x_rad: f64,
+        /// Held inner-ring tilt about the y axis \[rad\].
+        theta_y_rad: f64,
+    },
 }
 
 impl Tilt {
@@ -119,15 +125,17 @@ impl Default for SolveOptions {
 /// External load on the inner ring in the usual three numbers.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BearingLoad {
-    /// Axial load Fz [N] (positive loads the balls at positive contact angle).
+    /// Axial load Fz \[N\] (positive loads the balls at positive contact angle).
     pub axial_n: f64,
-    /// Radial load Fx [N].
+    /// Radial load Fx \[N\].
     pub radial_n: f64,
     /// Tilting moment M_y about the y axis (in the plane of the radial load) [N m].
     pub moment_n_m: f64,
 }
 
 impl BearingLoad {
+    /// Load from the axial force Fz \[N\], the radial force Fx \[N\] and the
+    /// tilting moment M_y [N m] (note the argument order: axial first).
     pub fn new(axial_n: f64, radial_n: f64, moment_n_m: f64) -> Self {
         BearingLoad {
             axial_n,
@@ -145,21 +153,21 @@ impl BearingLoad {
 /// State of one ball at the solved equilibrium.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BallState {
-    /// Azimuth psi_j from the x axis [rad].
+    /// Azimuth psi_j from the x axis \[rad\].
     pub azimuth_rad: f64,
-    /// Normal load on the inner raceway Q_i [N].
+    /// Normal load on the inner raceway Q_i \[N\].
     pub inner_load_n: f64,
-    /// Normal load on the outer raceway Q_o [N].
+    /// Normal load on the outer raceway Q_o \[N\].
     pub outer_load_n: f64,
-    /// Inner contact angle alpha_i [rad].
+    /// Inner contact angle alpha_i \[rad\].
     pub inner_contact_angle_rad: f64,
-    /// Outer contact angle alpha_o [rad].
+    /// Outer contact angle alpha_o \[rad\].
     pub outer_contact_angle_rad: f64,
-    /// Hertz approach at the inner contact delta_i [m] (negative: gap).
+    /// Hertz approach at the inner contact delta_i \[m\] (negative: gap).
     pub inner_deflection_m: f64,
-    /// Hertz approach at the outer contact delta_o [m] (negative: gap).
+    /// Hertz approach at the outer contact delta_o \[m\] (negative: gap).
     pub outer_deflection_m: f64,
-    /// Ball centrifugal force Fc [N].
+    /// Ball centrifugal force Fc \[N\].
     pub centrifugal_force_n: f64,
     /// Gyroscopic moment Mg [N m].
     pub gyroscopic_moment_n_m: f64,
@@ -167,7 +175,7 @@ pub struct BallState {
     pub orbit_speed_rad_s: f64,
     /// Ball speed about its own axis relative to the cage omega_b [rad/s].
     pub spin_speed_rad_s: f64,
-    /// Attitude angle beta of the ball axis [rad].
+    /// Attitude angle beta of the ball axis \[rad\].
     pub attitude_angle_rad: f64,
     /// Spin of the ball relative to the inner raceway about the contact normal [rad/s].
     pub inner_spin_rad_s: f64,
@@ -177,9 +185,9 @@ pub struct BallState {
     pub inner_spin_to_roll: f64,
     /// Spin-to-roll ratio at the outer contact [-].
     pub outer_spin_to_roll: f64,
-    /// Semi-major axis of the inner contact ellipse a_i [m].
+    /// Semi-major axis of the inner contact ellipse a_i \[m\].
     pub inner_semi_major_m: f64,
-    /// Semi-major axis of the outer contact ellipse a_o [m].
+    /// Semi-major axis of the outer contact ellipse a_o \[m\].
     pub outer_semi_major_m: f64,
 }
 
@@ -205,7 +213,7 @@ pub struct BearingState {
     pub iterations: usize,
     /// Final relative force residual.
     pub residual: f64,
-    /// Inner-ring speed [rpm].
+    /// Inner-ring speed \[rpm\].
     pub speed_rpm: f64,
 }
 
@@ -254,13 +262,13 @@ impl BearingState {
         }
     }
 
-    /// Largest inner contact load [N].
+    /// Largest inner contact load \[N\].
     pub fn max_inner_load_n(&self) -> f64 {
         self.balls.iter().map(|b| b.inner_load_n).fold(0.0, f64::max)
     }
 
     /// Angular extent of the loaded zone: 2 pi times the fraction of balls
-    /// whose inner contact carries load [rad].
+    /// whose inner contact carries load \[rad\].
     pub fn loaded_zone_rad(&self) -> f64 {
         let n = self.balls.iter().filter(|b| b.inner_load_n > 0.0).count();
         2.0 * std::f64::consts::PI * n as f64 / self.balls.len() as f64

@@ -29,7 +29,7 @@ use crate::error::{Error, Result};
 
 /// Contact angle of a thrust-loaded bearing:
 /// Fa / (Z K_n (B_f D)^1.5) = sin(a) (cos(a0) / cos(a) - 1)^1.5, with K_n
-/// evaluated at the contact angle a itself; safeguarded Newton [rad].
+/// evaluated at the contact angle a itself; safeguarded Newton \[rad\].
 pub fn thrust_contact_angle(model: &BearingModel, axial_n: f64) -> Result<f64> {
     crate::error::non_negative("axial_n", axial_n)?;
     let a0 = model.bearing.geometry.free_contact_angle_rad;

@@ -1,4 +1,4 @@
-//! Bearing stiffness (PHYSICS.md 6).
+//! Bearing stiffness (docs/concepts/physics.md §6).
 //!
 //! Two measures are offered:
 //!

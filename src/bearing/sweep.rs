@@ -12,7 +12,7 @@ use super::quasi_static::{static_start_q, WarmStart};
 use super::state::{BearingState, SolveOptions};
 use crate::error::Result;
 
-/// Quasi-static states at each speed [rpm] under the load [Fx, Fy, Fz, Mx, My]
+/// Quasi-static states at each speed \[rpm\] under the load [Fx, Fy, Fz, Mx, My]
 /// (N, N m). A speed that fails to solve gives its own `Err`.
 pub fn speed_sweep(
     model: &BearingModel,
@@ -30,6 +30,7 @@ pub fn speed_sweep(
 /// Stiffness of the bearing at one speed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StiffnessPoint {
+    /// Inner-ring (shaft) speed \[rpm\]; the outer ring is stationary.
     pub speed_rpm: f64,
     /// Seed formula A-39, A-40 [N/m].
     pub axial_stiffness_n_per_m: f64,
@@ -39,9 +40,9 @@ pub struct StiffnessPoint {
     pub stiffness_matrix_si: [[f64; 5]; 5],
     /// Inner-ring displacement [dx, dy, dz, theta_x, theta_y] (m, rad).
     pub displacement_m_rad: [f64; 5],
-    /// Inner contact angle of each ball [rad].
+    /// Inner contact angle of each ball \[rad\].
     pub inner_contact_angles_rad: Vec<f64>,
-    /// Outer contact angle of each ball [rad].
+    /// Outer contact angle of each ball \[rad\].
     pub outer_contact_angles_rad: Vec<f64>,
 }
 

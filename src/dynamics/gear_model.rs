@@ -8,7 +8,7 @@
 //! `k(tau) = 1 + alpha cos(Omega tau)`, `f` the dead zone with unit
 //! half-backlash (x is measured in units of b, time in 1/omega_n).
 //!
-//! (b) [`HelicalPair`]: the 8-DOF helical pair of PHYSICS.md section 7
+//! (b) [`HelicalPair`]: the 8-DOF helical pair of docs/concepts/physics.md §7
 //! (A-43 .. A-50), integrated in SI. The rotations enter the mesh only
 //! through `R_p theta_p - R_g theta_g` (A-45: the theta terms of delta_x and
 //! delta_y combine to `(R_p theta_p - R_g theta_g)(sin^2 phi + cos^2 phi)
@@ -30,8 +30,8 @@
 //! Mesh force: `F_n = k_m(t) f(delta_n - e(t)) + c_m d/dt(delta_n - e)`,
 //! dead zone `f(d) = d - clamp(d, -b, b)` (total backlash 2b).
 //! A-46 as printed applies the mesh damping only in contact
-//! ([`MeshDamping::InContact`], default); PHYSICS.md writes it always
-//! active ([`MeshDamping::Always`]). Both are offered: contact-only damping
+//! ([`MeshDamping::InContact`], default); docs/concepts/physics.md §7 writes
+//! it always active ([`MeshDamping::Always`]). Both are offered: contact-only damping
 //! leaves the separated teeth undamped and makes the force jump at
 //! contact, which widens the non-periodic regions markedly.
 //! `c_m = 2 zeta_m sqrt(k_mean m_mesh)` with the equivalent mass along the
@@ -240,7 +240,7 @@ pub struct GearBody {
 pub enum MeshDamping {
     /// Only while the teeth are in contact (A-46 as printed).
     InContact,
-    /// Always, also inside the backlash (PHYSICS.md section 7 form).
+    /// Always, also inside the backlash (docs/concepts/physics.md §7 form).
     Always,
 }
 
@@ -274,11 +274,11 @@ pub struct HelicalPairParams {
 impl HelicalPairParams {
     /// Seed A, Table 3 (first gear pair): z = 29/78, m_n = 1.537 mm,
     /// alpha_n = 16.5 deg, beta = 31.2 deg, masses 1.201/3.1 kg, inertias
-    /// 0.1152/1.6 t mm^2 = 1.152e-4/1.6e-3 kg m^2 (PHYSICS.md section 8).
+    /// 0.1152/1.6 t mm^2 = 1.152e-4/1.6e-3 kg m^2 (docs/concepts/physics.md §8).
     /// Base radii from r_b = z m_n / (2 cos beta) cos alpha_t,
     /// tan alpha_t = tan alpha_n / cos beta; phi = alpha_t (centres on a
     /// horizontal line). A gives no backlash, damping, TE or stiffness values;
-    /// documented defaults (PHYSICS.md section 8): b = 50 um, zeta_m = 0.07,
+    /// documented defaults (docs/concepts/physics.md §8): b = 50 um, zeta_m = 0.07,
     /// bearing zeta = 0.02, mean mesh stiffness 6.0e8 N/m (ISO 6336-1
     /// c_gamma ~ 20 N/(mm um) x 33 mm face width) with a +-10 % harmonic
     /// variation, TE amplitude 2 um, Kr = 2e8 N/m, Ka = 5e7 N/m, 100 N m.

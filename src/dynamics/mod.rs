@@ -1,7 +1,7 @@
 //! Nonlinear gear dynamics: ODE traits, RK4 / Dormand-Prince integrators,
 //! the 1-DOF backlash oscillator and the 8-DOF (reduced to 7-DOF) helical
-//! pair of PHYSICS.md section 7 (A-43 .. A-50), Lyapunov exponents, Poincare
-//! sections, motion classification and speed sweeps (A, section 3.3,
+//! pair of docs/concepts/physics.md §7 (A-43 .. A-50), Lyapunov exponents,
+//! Poincare sections, motion classification and speed sweeps (A, section 3.3,
 //! Figs. 14-15).
 
 pub mod batch;

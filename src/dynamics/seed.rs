@@ -35,19 +35,19 @@ use crate::{Error, Result};
 
 /// Bearings on each gear shaft (seed A Fig. 1), acting in parallel.
 pub const BEARINGS_PER_SHAFT: usize = 2;
-/// Axial gear force on the bearing at the seed torque (A section 2.3) [N].
+/// Axial gear force on the bearing at the seed torque (A section 2.3) \[N\].
 pub const SEED_AXIAL_LOAD_N: f64 = 2380.9;
-/// Radial gear force on the bearing at the seed torque (A section 2.3) [N].
+/// Radial gear force on the bearing at the seed torque (A section 2.3) \[N\].
 pub const SEED_RADIAL_LOAD_N: f64 = 1189.9;
-/// Axial preload (A section 2.4, Fig. 10) [N].
+/// Axial preload (A section 2.4, Fig. 10) \[N\].
 pub const SEED_PRELOAD_N: f64 = 300.0;
 /// Input torque at which the seed loads are given [N m].
 pub const SEED_TORQUE_N_M: f64 = 100.0;
 
-/// Values seed A does not give (PHYSICS.md section 8), with their defaults.
+/// Values seed A does not give (docs/concepts/physics.md §8), with their defaults.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GearSystemDefaults {
-    /// Half backlash b [m] (total clearance 2b). Default 50 um.
+    /// Half backlash b \[m\] (total clearance 2b). Default 50 um.
     pub half_backlash_m: f64,
     /// Mesh damping ratio zeta_m [-]. Default 0.07 (0.03..0.17 is the usual
     /// range of measured gear-mesh damping ratios, Kahraman & Singh 1990).
@@ -56,7 +56,7 @@ pub struct GearSystemDefaults {
     pub mesh_damping: MeshDamping,
     /// Bearing damping ratio on the body mass [-]. Default 0.02.
     pub bearing_damping_ratio: f64,
-    /// Amplitude of the first mesh harmonic of the static TE [m]. Default 2 um.
+    /// Amplitude of the first mesh harmonic of the static TE \[m\]. Default 2 um.
     pub te_amplitude_m: f64,
     /// Samples of k_m and e per mesh period passed to the model. Default 64.
     pub table_points: usize,

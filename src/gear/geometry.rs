@@ -1,4 +1,4 @@
-//! Involute helical gear pair geometry (PHYSICS.md section 7; seed A
+//! Involute helical gear pair geometry (docs/concepts/physics.md §7; seed A
 //! section 3.2, Table 3). Formulas are the standard ones of ISO 21771 /
 //! DIN 3960 (transverse module, involute function, operating pressure angle
 //! with profile shift, contact ratios). Everything SI inside: metres,
@@ -38,11 +38,11 @@ pub struct WheelSpec {
     pub profile_shift_coeff: f64,
     /// Tip alteration coefficient k (in units of m_n, usually <= 0). Default 0.
     pub tip_alteration_coeff: f64,
-    /// Mass of the wheel (with whatever rotates rigidly with it) [kg].
+    /// Mass of the wheel (with whatever rotates rigidly with it) \[kg\].
     pub mass_kg: f64,
     /// Polar mass moment of inertia about the axis of rotation [kg m^2].
     pub polar_inertia_kg_m2: f64,
-    /// Inner radius of the gear rim / bore [m], used by the fillet-foundation
+    /// Inner radius of the gear rim / bore \[m\], used by the fillet-foundation
     /// term of the mesh stiffness (Sainsot et al. 2004). `None` means "not
     /// known": the mesh model then assumes r_f / r_bore = 2.
     pub bore_radius_m: Option<f64>,
@@ -68,19 +68,19 @@ impl WheelSpec {
 pub struct GearPairSpec {
     /// [pinion, gear].
     pub wheels: [WheelSpec; 2],
-    /// Normal module m_n [m].
+    /// Normal module m_n \[m\].
     pub normal_module_m: f64,
-    /// Normal pressure angle alpha_n [rad].
+    /// Normal pressure angle alpha_n \[rad\].
     pub normal_pressure_angle_rad: f64,
-    /// Helix angle at the reference cylinder beta [rad] (0 = spur).
+    /// Helix angle at the reference cylinder beta \[rad\] (0 = spur).
     pub helix_angle_rad: f64,
-    /// Common face width b [m].
+    /// Common face width b \[m\].
     pub face_width_m: f64,
     /// Basic-rack addendum coefficient ha* (default 1.0, ISO 53 profile A).
     pub addendum_coeff: f64,
     /// Basic-rack dedendum coefficient hf* (default 1.25, ISO 53 profile A).
     pub dedendum_coeff: f64,
-    /// Young's modulus of both wheels E [Pa].
+    /// Young's modulus of both wheels E \[Pa\].
     pub youngs_modulus_pa: f64,
     /// Poisson's ratio of both wheels nu [-].
     pub poisson_ratio: f64,
@@ -93,41 +93,41 @@ pub struct GearPairSpec {
 /// Quantities derived from a [`GearPairSpec`]. Arrays are [pinion, gear].
 #[derive(Debug, Clone, PartialEq)]
 pub struct GearGeometry {
-    /// Transverse module m_t = m_n / cos(beta) [m].
+    /// Transverse module m_t = m_n / cos(beta) \[m\].
     pub transverse_module_m: f64,
-    /// Transverse pressure angle alpha_t = atan(tan(alpha_n) / cos(beta)) [rad].
+    /// Transverse pressure angle alpha_t = atan(tan(alpha_n) / cos(beta)) \[rad\].
     pub transverse_pressure_angle_rad: f64,
-    /// Operating transverse pressure angle alpha_wt [rad].
+    /// Operating transverse pressure angle alpha_wt \[rad\].
     pub operating_pressure_angle_rad: f64,
-    /// Base helix angle beta_b = atan(tan(beta) cos(alpha_t)) [rad].
+    /// Base helix angle beta_b = atan(tan(beta) cos(alpha_t)) \[rad\].
     pub base_helix_angle_rad: f64,
-    /// Reference centre distance a = r1 + r2 [m].
+    /// Reference centre distance a = r1 + r2 \[m\].
     pub reference_centre_distance_m: f64,
-    /// Operating centre distance a' [m].
+    /// Operating centre distance a' \[m\].
     pub centre_distance_m: f64,
-    /// Reference pitch radii r = z m_t / 2 [m].
+    /// Reference pitch radii r = z m_t / 2 \[m\].
     pub pitch_radius_m: [f64; 2],
-    /// Operating pitch radii r_w = r_b / cos(alpha_wt) [m].
+    /// Operating pitch radii r_w = r_b / cos(alpha_wt) \[m\].
     pub operating_pitch_radius_m: [f64; 2],
-    /// Base radii r_b = r cos(alpha_t) [m].
+    /// Base radii r_b = r cos(alpha_t) \[m\].
     pub base_radius_m: [f64; 2],
-    /// Tip radii [m].
+    /// Tip radii \[m\].
     pub tip_radius_m: [f64; 2],
-    /// Root radii [m].
+    /// Root radii \[m\].
     pub root_radius_m: [f64; 2],
-    /// Half tooth thickness angle at the base circle (transverse) [rad]:
+    /// Half tooth thickness angle at the base circle (transverse) \[rad\]:
     /// psi_b = (pi/2 + 2 x tan(alpha_n)) / z + inv(alpha_t).
     pub base_half_tooth_angle_rad: [f64; 2],
     /// Virtual (equivalent spur) tooth numbers z_n = z / (cos^2(beta_b) cos(beta)).
     pub virtual_teeth: [f64; 2],
-    /// Transverse base pitch p_bt = pi m_t cos(alpha_t) [m].
+    /// Transverse base pitch p_bt = pi m_t cos(alpha_t) \[m\].
     pub transverse_base_pitch_m: f64,
-    /// Length of the transverse path of contact g_alpha [m].
+    /// Length of the transverse path of contact g_alpha \[m\].
     pub path_of_contact_m: f64,
     /// Distance from the pinion's tangency point T1 to the start of contact A
-    /// along the line of action [m].
+    /// along the line of action \[m\].
     pub t1_to_start_m: f64,
-    /// Distance T1 T2 = a' sin(alpha_wt) [m].
+    /// Distance T1 T2 = a' sin(alpha_wt) \[m\].
     pub t1_to_t2_m: f64,
     /// Transverse contact ratio eps_alpha = g_alpha / p_bt.
     pub transverse_contact_ratio: f64,
@@ -135,27 +135,31 @@ pub struct GearGeometry {
     pub overlap_ratio: f64,
     /// Total contact ratio eps_gamma = eps_alpha + eps_beta.
     pub total_contact_ratio: f64,
-    /// Line-of-action angle phi of seed A (A-45) [rad]; see module docs.
+    /// Line-of-action angle phi of seed A (A-45) \[rad\]; see module docs.
     pub line_of_action_angle_rad: f64,
 }
 
 /// Tooth force components at the reference cylinder (ISO 6336-1 convention).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ToothForces {
-    /// Tangential force F_t = T / r_1 [N].
+    /// Tangential force F_t = T / r_1 \[N\].
     pub tangential_n: f64,
-    /// Radial force F_r = F_t tan(alpha_t) [N].
+    /// Radial force F_r = F_t tan(alpha_t) \[N\].
     pub radial_n: f64,
-    /// Axial force F_a = F_t tan(beta) [N].
+    /// Axial force F_a = F_t tan(beta) \[N\].
     pub axial_n: f64,
-    /// Normal force F_n = F_t / (cos(alpha_n) cos(beta)) [N].
+    /// Normal force F_n = F_t / (cos(alpha_n) cos(beta)) \[N\].
     pub normal_n: f64,
 }
 
 /// A validated helical gear pair with its derived geometry.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GearPair {
+    /// The validated input data (teeth, module, angles, face width,
+    /// material, masses, input torque).
     pub spec: GearPairSpec,
+    /// Geometry derived from `spec` (ISO 21771: radii, pressure angles,
+    /// path of contact, contact ratios).
     pub geometry: GearGeometry,
 }
 
@@ -196,7 +200,8 @@ pub fn inverse_involute(value: f64) -> Result<f64> {
 impl GearPairSpec {
     /// Seed A Table 3, first gear pair of the electric drive (Liu, Liu & Hu,
     /// Sensors 2021, 21, 309), with the table's unit typos corrected
-    /// (PHYSICS.md section 8; see [`TableGearData::seed_electric_drive_as_printed`]):
+    /// (docs/concepts/physics.md §8; see
+    /// [`TableGearData::seed_electric_drive_as_printed`]):
     /// z = 29 / 78, m_n = 1.537 mm, alpha_n = 16.5 deg, beta = 31.2 deg,
     /// b = 33 mm, E = 206 GPa (printed 20,600 MPa), nu = 0.25,
     /// rho = 7800 kg/m^3 (printed 7.8e9 t/mm^3), masses 1.201 / 3.1 kg,
@@ -250,27 +255,27 @@ impl GearPair {
         }
     }
 
-    /// Base radii [pinion, gear] [m].
+    /// Base radii [pinion, gear] \[m\].
     pub fn base_radius_m(&self) -> [f64; 2] {
         self.geometry.base_radius_m
     }
 
-    /// Helix angle beta at the reference cylinder [rad].
+    /// Helix angle beta at the reference cylinder \[rad\].
     pub fn helix_angle_rad(&self) -> f64 {
         self.spec.helix_angle_rad
     }
 
-    /// Base helix angle beta_b [rad].
+    /// Base helix angle beta_b \[rad\].
     pub fn base_helix_angle_rad(&self) -> f64 {
         self.geometry.base_helix_angle_rad
     }
 
-    /// Line-of-action angle phi of seed A (A-45) [rad] (= alpha_wt, module docs).
+    /// Line-of-action angle phi of seed A (A-45) \[rad\] (= alpha_wt, module docs).
     pub fn line_of_action_angle_rad(&self) -> f64 {
         self.geometry.line_of_action_angle_rad
     }
 
-    /// Masses [pinion, gear] [kg].
+    /// Masses [pinion, gear] \[kg\].
     pub fn mass_kg(&self) -> [f64; 2] {
         [self.spec.wheels[0].mass_kg, self.spec.wheels[1].mass_kg]
     }
@@ -298,13 +303,13 @@ impl GearPair {
         self.spec.wheels[1].teeth as f64 / self.spec.wheels[0].teeth as f64
     }
 
-    /// Tooth mesh frequency f_z = z1 n1 / 60 [Hz] for a pinion speed [rpm].
+    /// Tooth mesh frequency f_z = z1 n1 / 60 \[Hz\] for a pinion speed \[rpm\].
     pub fn mesh_frequency_hz(&self, pinion_speed_rpm: f64) -> Result<f64> {
         let n = positive("pinion_speed_rpm", pinion_speed_rpm)?;
         Ok(self.spec.wheels[0].teeth as f64 * n / 60.0)
     }
 
-    /// Mesh period T_z = 1 / f_z [s] for a pinion speed [rpm].
+    /// Mesh period T_z = 1 / f_z \[s\] for a pinion speed \[rpm\].
     pub fn mesh_period_s(&self, pinion_speed_rpm: f64) -> Result<f64> {
         Ok(1.0 / self.mesh_frequency_hz(pinion_speed_rpm)?)
     }
@@ -324,7 +329,7 @@ impl GearPair {
 
     /// Pinion (0) and gear (1) roll distances rho_i = |T_i P| of the contact
     /// point at a position `s_m` measured along the transverse path of
-    /// contact from its start A (0 <= s <= g_alpha) [m].
+    /// contact from its start A (0 <= s <= g_alpha) \[m\].
     pub fn roll_distances_m(&self, s_m: f64) -> [f64; 2] {
         let g = &self.geometry;
         let rho1 = g.t1_to_start_m + s_m;
@@ -382,7 +387,7 @@ fn validate_spec(s: &GearPairSpec) -> Result<()> {
 }
 
 /// Physically impossible material or inertia values, with the likely
-/// intended value in the message (PHYSICS.md section 8):
+/// intended value in the message (docs/concepts/physics.md §8):
 /// * density outside 500..25,000 kg/m^3 (no engineering solid lies outside;
 ///   osmium, the densest element, is 22,590 kg/m^3) — a value like 7.8e21
 ///   kg/m^3 (7.8e9 t/mm^3) is a sign-of-exponent typo for 7800 kg/m^3;
@@ -572,7 +577,7 @@ fn validate_geometry(s: &GearPairSpec, g: &GearGeometry) -> Result<()> {
 }
 
 /// One suspicious value in a table of gear data, with the value most likely
-/// meant (PHYSICS.md section 8).
+/// meant (docs/concepts/physics.md §8).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TypoWarning {
     /// Field name with its unit as printed (e.g. `youngs_modulus_mpa`).
@@ -581,6 +586,8 @@ pub struct TypoWarning {
     pub given: f64,
     /// The value most likely intended, in the same unit.
     pub likely_intended: f64,
+    /// Why the value is suspicious and which slip (sign of the exponent,
+    /// unit, digit) most likely produced it.
     pub reason: String,
 }
 
@@ -590,21 +597,27 @@ pub struct TypoWarning {
 /// [`TableGearData::into_si`] refuses a table that has any.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TableGearData {
+    /// Young's modulus E as printed [MPa = N/mm^2]; steel is 190,000..220,000.
     pub youngs_modulus_mpa: f64,
+    /// Density as printed [t/mm^3]; steel is 6.9e-9..8.1e-9 (7.8e-9 t/mm^3 =
+    /// 7800 kg/m^3).
     pub density_t_per_mm3: f64,
-    /// [pinion, gear] [kg].
+    /// [pinion, gear] \[kg\].
     pub mass_kg: [f64; 2],
     /// [pinion, gear] [t mm^2] (1 t mm^2 = 1e-3 kg m^2).
     pub polar_inertia_t_mm2: [f64; 2],
-    /// [pinion, gear] outer (tip) radii [mm], used to bound the inertia.
+    /// [pinion, gear] outer (tip) radii \[mm\], used to bound the inertia.
     pub tip_radius_mm: [f64; 2],
 }
 
 /// Material data converted to SI by [`TableGearData::into_si`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SiGearData {
+    /// Young's modulus E \[Pa\] (MPa x 1e6).
     pub youngs_modulus_pa: f64,
+    /// Density [kg/m^3] (t/mm^3 x 1e12).
     pub density_kg_m3: f64,
+    /// [pinion, gear] polar moments of inertia [kg m^2] (t mm^2 x 1e-3).
     pub polar_inertia_kg_m2: [f64; 2],
 }
 
@@ -683,7 +696,7 @@ impl TableGearData {
         out
     }
 
-    /// Convert to SI (E [Pa] = MPa x 1e6, rho [kg/m^3] = t/mm^3 x 1e12,
+    /// Convert to SI (E \[Pa\] = MPa x 1e6, rho [kg/m^3] = t/mm^3 x 1e12,
     /// I [kg m^2] = t mm^2 x 1e-3). Refuses the table if [`Self::warnings`]
     /// finds anything: the error names the field and the likely intended value.
     pub fn into_si(&self) -> Result<SiGearData> {

@@ -41,7 +41,10 @@ pub enum GearBlank {
     /// Webbed blank: web thickness / face width b_s/b, rim thickness / normal
     /// module s_R/m_n.
     Webbed {
+        /// Web thickness over face width b_s/b [-]; clamped to [0.2, 1.2].
         web_to_face_ratio: f64,
+        /// Rim thickness over normal module s_R/m_n [-]; values below 1 are
+        /// taken as 1.
         rim_to_module_ratio: f64,
     },
 }
@@ -87,7 +90,7 @@ pub struct IsoStiffness {
     pub mesh_alpha_n_per_mm_um: f64,
     /// Mesh stiffness c_gamma_beta [N/(mm um)].
     pub mesh_beta_n_per_mm_um: f64,
-    /// Face width b [m] used for the totals.
+    /// Face width b \[m\] used for the totals.
     pub face_width_m: f64,
 }
 
@@ -142,7 +145,7 @@ pub fn blank_factor(blank: GearBlank) -> Result<f64> {
     }
 }
 
-/// C_B for a basic rack of dedendum coefficient hf* and pressure angle alpha_Pn [rad].
+/// C_B for a basic rack of dedendum coefficient hf* and pressure angle alpha_Pn \[rad\].
 pub fn basic_rack_factor(dedendum_coeff: f64, rack_pressure_angle_rad: f64) -> f64 {
     (1.0 + 0.5 * (1.2 - dedendum_coeff)) * (1.0 - 0.02 * (20.0 - rack_pressure_angle_rad.to_degrees()))
 }

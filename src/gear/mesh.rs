@@ -1,5 +1,5 @@
 //! Time-varying mesh stiffness k_m(t) and static transmission error e(t)
-//! over one mesh period (PHYSICS.md section 7, A-46).
+//! over one mesh period (docs/concepts/physics.md §7, A-46).
 //!
 //! # Model built: potential energy per transverse slice
 //!
@@ -97,13 +97,19 @@ impl Default for MeshOptions {
 /// [m/N per m^-1, i.e. 1/(N/m per m)].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ToothCompliance {
+    /// Bending compliance 1/k_b of the tooth cantilever (module docs).
     pub bending: f64,
+    /// Shear compliance 1/k_s (shear factor 1.2 of a rectangular section).
     pub shear: f64,
+    /// Axial-compression compliance 1/k_a.
     pub axial: f64,
+    /// Fillet-foundation compliance 1/k_f (Sainsot, Velex & Duverger 2004,
+    /// coefficients [`SAINSOT`]).
     pub foundation: f64,
 }
 
 impl ToothCompliance {
+    /// Sum of the four compliances of the tooth (springs in series).
     pub fn total(&self) -> f64 {
         self.bending + self.shear + self.axial + self.foundation
     }
@@ -112,6 +118,8 @@ impl ToothCompliance {
 /// Compliances of a tooth pair per metre of face width at one contact position.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PairCompliance {
+    /// Hertz line-contact compliance 1/k_h = 4 (1 - nu^2) / (pi E) (Yang &
+    /// Sun 1985); the same at every contact position.
     pub hertz: f64,
     /// [pinion, gear].
     pub teeth: [ToothCompliance; 2],
@@ -358,8 +366,13 @@ impl PathTable {
 /// Which model produced a [`MeshStiffness`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum StiffnessModel {
+    /// Potential-energy tooth model, [`MeshStiffness::potential_energy`]
+    /// (module docs).
     PotentialEnergy,
+    /// ISO 6336-1 single stiffness c' times the contact-line length,
+    /// [`MeshStiffness::iso_contact_line`].
     IsoContactLine,
+    /// A table supplied by the user, [`MeshStiffness::from_samples`].
     UserSamples,
 }
 
@@ -368,6 +381,7 @@ pub enum StiffnessModel {
 #[derive(Debug, Clone, PartialEq)]
 pub struct MeshStiffness {
     table_n_per_m: Vec<f64>,
+    /// The model that produced the table (kept by [`MeshStiffness::scaled`]).
     pub model: StiffnessModel,
 }
 
@@ -495,14 +509,17 @@ impl MeshStiffness {
         self.table_n_per_m.iter().sum::<f64>() / self.table_n_per_m.len() as f64
     }
 
+    /// Largest value of the table over one mesh period [N/m].
     pub fn max_n_per_m(&self) -> f64 {
         self.table_n_per_m.iter().cloned().fold(f64::MIN, f64::max)
     }
 
+    /// Smallest value of the table over one mesh period [N/m].
     pub fn min_n_per_m(&self) -> f64 {
         self.table_n_per_m.iter().cloned().fold(f64::MAX, f64::min)
     }
 
+    /// Fluctuation max - min over one mesh period [N/m].
     pub fn peak_to_peak_n_per_m(&self) -> f64 {
         self.max_n_per_m() - self.min_n_per_m()
     }
@@ -563,14 +580,14 @@ fn fourier_of(table: &[f64], harmonics: usize) -> (f64, Vec<(f64, f64)>) {
     (mean, coeffs)
 }
 
-/// Static transmission error e(t) over one mesh period [m]: either harmonics
+/// Static transmission error e(t) over one mesh period \[m\]: either harmonics
 /// of the mesh frequency, e(phi) = sum_k A_k cos(2 pi k phi + theta_k)
 /// (k = 1, 2, ...), or a user table at phases i / n (linear interpolation).
 #[derive(Debug, Clone, PartialEq)]
 pub enum TransmissionError {
-    /// (amplitude [m], phase [rad]) of harmonics 1, 2, ... of the mesh frequency.
+    /// (amplitude \[m\], phase \[rad\]) of harmonics 1, 2, ... of the mesh frequency.
     Harmonics(Vec<(f64, f64)>),
-    /// Values [m] at phases i / n.
+    /// Values \[m\] at phases i / n.
     Samples(Vec<f64>),
 }
 
@@ -589,7 +606,7 @@ impl TransmissionError {
         Ok(TransmissionError::Harmonics(amplitudes_m_phases_rad))
     }
 
-    /// A user series over one mesh period [m] (at least 2 finite values).
+    /// A user series over one mesh period \[m\] (at least 2 finite values).
     pub fn from_samples(samples_m: Vec<f64>) -> Result<Self> {
         if samples_m.len() < 2 {
             return Err(Error::config(
@@ -605,7 +622,7 @@ impl TransmissionError {
     }
 
     /// Loaded static transmission error of a rigid-body-free pair under a
-    /// constant transverse force: e(phi) = F / k_m(phi) - mean (zero mean) [m],
+    /// constant transverse force: e(phi) = F / k_m(phi) - mean (zero mean) \[m\],
     /// tabulated at the stiffness table's phases.
     pub fn loaded_static(stiffness: &MeshStiffness, force_n: f64) -> Result<Self> {
         finite("force_n", force_n)?;
@@ -614,7 +631,7 @@ impl TransmissionError {
         Ok(TransmissionError::Samples(d.into_iter().map(|v| v - mean).collect()))
     }
 
-    /// e at a mesh phase (wrapped into [0, 1)) [m].
+    /// e at a mesh phase (wrapped into [0, 1)) \[m\].
     pub fn at(&self, mesh_phase: f64) -> f64 {
         match self {
             TransmissionError::Harmonics(h) => h
@@ -627,7 +644,7 @@ impl TransmissionError {
         }
     }
 
-    /// n values at phases i / n [m].
+    /// n values at phases i / n \[m\].
     pub fn samples(&self, n: usize) -> Vec<f64> {
         (0..n).map(|i| self.at(i as f64 / n as f64)).collect()
     }

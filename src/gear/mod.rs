@@ -1,4 +1,4 @@
-//! Helical gear pair of seed A (PHYSICS.md section 7): geometry and data
+//! Helical gear pair of seed A (docs/concepts/physics.md §7): geometry and data
 //! checks ([`geometry`]), ISO 6336-1 Method B tooth stiffness ([`iso6336`]),
 //! time-varying mesh stiffness and static transmission error ([`mesh`]),
 //! and the classic 1-DOF torsional backlash scaling ([`torsional`]).

@@ -26,15 +26,15 @@ use std::f64::consts::PI;
 /// Dimensional and nondimensional data of the 1-DOF torsional mesh model.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TorsionalMesh {
-    /// Equivalent mass on the line of action m_e [kg].
+    /// Equivalent mass on the line of action m_e \[kg\].
     pub equivalent_mass_kg: f64,
     /// Mean mesh stiffness k_mean [N/m] (transverse line of action).
     pub mean_stiffness_n_per_m: f64,
     /// omega_n = sqrt(k_mean / m_e) [rad/s].
     pub natural_frequency_rad_s: f64,
-    /// Mean transmitted force F_m = T_1 / r_b1 [N].
+    /// Mean transmitted force F_m = T_1 / r_b1 \[N\].
     pub mean_force_n: f64,
-    /// Backlash half width b [m].
+    /// Backlash half width b \[m\].
     pub backlash_half_m: f64,
     /// Viscous mesh damping ratio zeta [-].
     pub damping_ratio: f64,
@@ -81,13 +81,13 @@ impl TorsionalMesh {
         })
     }
 
-    /// Omega = omega_z / omega_n for a pinion speed [rpm].
+    /// Omega = omega_z / omega_n for a pinion speed \[rpm\].
     pub fn frequency_ratio(&self, pinion_speed_rpm: f64) -> Result<f64> {
         let n = positive("pinion_speed_rpm", pinion_speed_rpm)?;
         Ok(2.0 * PI * self.pinion_teeth as f64 * n / 60.0 / self.natural_frequency_rad_s)
     }
 
-    /// Pinion speed [rpm] at which the mesh frequency equals omega_n (Omega = 1).
+    /// Pinion speed \[rpm\] at which the mesh frequency equals omega_n (Omega = 1).
     pub fn resonance_speed_rpm(&self) -> f64 {
         self.natural_frequency_rad_s * 60.0 / (2.0 * PI * self.pinion_teeth as f64)
     }

@@ -9,8 +9,8 @@
 //! mass, rotary inertia and the gyroscopic matrix (twice the rotary inertia
 //! matrix, coupling the two bending planes).
 //!
-//! Degrees of freedom per node, in this order: x, y [m], theta_x, theta_y
-//! [rad], with z the spin axis. Sign convention (right-handed small
+//! Degrees of freedom per node, in this order: x, y \[m\], theta_x, theta_y
+//! \[rad\], with z the spin axis. Sign convention (right-handed small
 //! rotations): theta_y = +du_x/dz and theta_x = -du_y/dz for a slender beam,
 //! so a disk spinning at +Omega obeys
 //! `Id theta_x'' + Ip Omega theta_y' = M_x`, `Id theta_y'' - Ip Omega theta_x' = M_y`.
@@ -30,12 +30,13 @@ pub type ElementMatrix = SMatrix<f64, 8, 8>;
 /// One cylindrical step of a stepped shaft.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShaftSection {
-    /// Axial length of the step [m].
+    /// Axial length of the step \[m\].
     pub length_m: f64,
-    /// Outer diameter [m].
+    /// Outer diameter \[m\].
     pub outer_diameter_m: f64,
-    /// Inner (bore) diameter [m]; 0 for a solid section.
+    /// Inner (bore) diameter \[m\]; 0 for a solid section.
     pub inner_diameter_m: f64,
+    /// Shaft material: E, density and nu (nu gives G and the shear coefficient).
     pub material: Material,
 }
 
@@ -77,7 +78,7 @@ impl ShaftSection {
         std::f64::consts::PI * (self.outer_diameter_m.powi(4) - self.inner_diameter_m.powi(4)) / 64.0
     }
 
-    /// Mass of the step [kg].
+    /// Mass of the step \[kg\].
     pub fn mass_kg(&self) -> f64 {
         self.material.density_kg_m3 * self.area_m2() * self.length_m
     }
@@ -96,11 +97,17 @@ pub fn shear_coefficient_hollow(poisson_ratio: f64, diameter_ratio: f64) -> f64 
 /// One Timoshenko beam element between two nodes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BeamElement {
+    /// Element length L \[m\].
     pub length_m: f64,
+    /// Outer diameter \[m\], from the section.
     pub outer_diameter_m: f64,
+    /// Inner (bore) diameter \[m\]; 0 for a solid section.
     pub inner_diameter_m: f64,
+    /// Young's modulus E \[Pa\].
     pub youngs_modulus_pa: f64,
+    /// Shear modulus G = E / (2 (1 + nu)) \[Pa\].
     pub shear_modulus_pa: f64,
+    /// Density rho [kg/m^3].
     pub density_kg_m3: f64,
     /// Shear coefficient kappa [-].
     pub shear_coefficient: f64,
@@ -229,7 +236,7 @@ impl BeamElement {
         g
     }
 
-    /// Mass of the element [kg].
+    /// Mass of the element \[kg\].
     pub fn mass_kg(&self) -> f64 {
         self.density_kg_m3 * self.area_m2() * self.length_m
     }
@@ -268,12 +275,13 @@ pub fn add_element(global: &mut DMatrix<f64>, node: usize, e: &ElementMatrix) {
 /// A meshed shaft: node positions and the elements between consecutive nodes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShaftMesh {
-    /// Axial node positions from the left end (z = 0) [m], strictly increasing.
+    /// Axial node positions from the left end (z = 0) \[m\], strictly increasing.
     pub node_positions_m: Vec<f64>,
+    /// Elements between consecutive nodes: element i spans nodes i and i + 1.
     pub elements: Vec<BeamElement>,
 }
 
-/// Two positions closer than this are one node [m].
+/// Two positions closer than this are one node \[m\].
 pub const NODE_TOLERANCE_M: f64 = 1e-9;
 
 impl ShaftMesh {
@@ -328,7 +336,7 @@ impl ShaftMesh {
         self.node_positions_m.len()
     }
 
-    /// Total shaft length [m].
+    /// Total shaft length \[m\].
     pub fn length_m(&self) -> f64 {
         *self.node_positions_m.last().unwrap_or(&0.0)
     }

@@ -28,17 +28,17 @@ pub const MU0_H_PER_M: f64 = 1.256_637_062_12e-6;
 pub struct UnbalancedMagneticPull {
     /// Include the pull (negative stiffness and static-eccentricity force)?
     pub enabled: bool,
-    /// Axial position of the rotor-core node that carries the pull [m].
+    /// Axial position of the rotor-core node that carries the pull \[m\].
     pub position_m: f64,
-    /// Rotor outer radius R [m].
+    /// Rotor outer radius R \[m\].
     pub rotor_radius_m: f64,
-    /// Active (stack) length L [m].
+    /// Active (stack) length L \[m\].
     pub core_length_m: f64,
-    /// Nominal radial air gap g0 [m].
+    /// Nominal radial air gap g0 \[m\].
     pub air_gap_m: f64,
-    /// RMS air-gap flux density B0 [T].
+    /// RMS air-gap flux density B0 \[T\].
     pub flux_density_t: f64,
-    /// Static eccentricity of the rotor in the stator bore, along +x [m].
+    /// Static eccentricity of the rotor in the stator bore, along +x \[m\].
     pub static_eccentricity_m: f64,
     /// Empirical reduction of the ideal pull (saturation, parallel paths) [-].
     pub reduction_factor: f64,
@@ -71,7 +71,7 @@ impl UnbalancedMagneticPull {
             / (MU0_H_PER_M * self.air_gap_m)
     }
 
-    /// Constant pull from the static eccentricity, along +x [N] (0 when disabled).
+    /// Constant pull from the static eccentricity, along +x \[N\] (0 when disabled).
     pub fn static_force_n(&self) -> f64 {
         self.stiffness_n_per_m() * self.static_eccentricity_m
     }

@@ -34,9 +34,11 @@ pub use support::{BearingCoefficients, BearingModel, BearingSupport, SpeedTable}
 /// A rigid disk lumped at a node (rotor core, tool holder, nut...).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Disk {
+    /// Label used in error messages (e.g. `tool_holder`, `rotor_core_0`).
     pub name: String,
-    /// Axial position of the disk's centre of mass [m].
+    /// Axial position of the disk's centre of mass \[m\].
     pub position_m: f64,
+    /// Mass \[kg\], added to both translations of its node.
     pub mass_kg: f64,
     /// Polar moment of inertia Ip about the spin axis [kg m^2].
     pub polar_inertia_kg_m2: f64,
@@ -93,23 +95,30 @@ impl Disk {
 pub struct RotorSpec {
     /// Shaft steps from the left end (z = 0) to the right.
     pub sections: Vec<ShaftSection>,
+    /// Rigid disks; each position becomes a mesh node and must lie on the shaft.
     pub disks: Vec<Disk>,
+    /// Bearing supports; each position becomes a mesh node and must lie on
+    /// the shaft.
     pub bearings: Vec<BearingSupport>,
     /// Optional unbalanced magnetic pull at the rotor core.
     pub magnetic_pull: Option<UnbalancedMagneticPull>,
     /// Modal damping ratio of the rotor-bearing modes at rest [-] (the
     /// structural damping of shaft and fits; bearing damping adds to it).
     pub modal_damping_ratio: f64,
-    /// Longest finite element [m].
+    /// Longest finite element \[m\].
     pub max_element_length_m: f64,
 }
 
 /// Lateral DOF of a node.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LateralDof {
+    /// Translation x \[m\].
     X = 0,
+    /// Translation y \[m\].
     Y = 1,
+    /// Rotation about x \[rad\] (theta_x = -du_y/dz, see [`beam`]).
     ThetaX = 2,
+    /// Rotation about y \[rad\] (theta_y = +du_x/dz, see [`beam`]).
     ThetaY = 3,
 }
 
@@ -121,6 +130,8 @@ pub enum LateralDof {
 pub struct SystemMatrices {
     /// Spin speed Omega [rad/s].
     pub spin_speed_rad_s: f64,
+    /// Mass matrix M: consistent shaft mass and rotary inertia, plus the disk
+    /// masses and diametral inertias.
     pub mass_si: DMatrix<f64>,
     /// Gyroscopic matrix per unit spin speed (multiply by Omega), skew.
     pub gyroscopic_si: DMatrix<f64>,
@@ -265,7 +276,7 @@ impl Rotor {
         &self.bearing_nodes
     }
 
-    /// Total rotating mass (shaft + disks) [kg].
+    /// Total rotating mass (shaft + disks) \[kg\].
     pub fn mass_kg(&self) -> f64 {
         self.mesh.elements.iter().map(|e| e.mass_kg()).sum::<f64>()
             + self.spec.disks.iter().map(|d| d.mass_kg).sum::<f64>()

@@ -20,7 +20,9 @@ use crate::error::{finite, Error, Result};
 /// Whirl direction of a mode relative to the spin.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Whirl {
+    /// The orbit turns in the direction of spin.
     Forward,
+    /// The orbit turns against the spin.
     Backward,
     /// Planar (no dominant direction), or not classified.
     Undetermined,
@@ -29,10 +31,12 @@ pub enum Whirl {
 /// One damped mode at one speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Mode {
-    /// Damped natural frequency Im(s) / 2 pi [Hz].
+    /// Damped natural frequency Im(s) / 2 pi \[Hz\].
     pub frequency_hz: f64,
     /// Damping ratio -Re(s) / |s| [-] (negative: unstable).
     pub damping_ratio: f64,
+    /// Whirl direction; [`Whirl::Undetermined`] for a repeated pair or when
+    /// [`CampbellOptions::classify_whirl`] is off.
     pub whirl: Whirl,
 }
 
@@ -43,7 +47,7 @@ pub struct CampbellOptions {
     pub modes: usize,
     /// Pseudo-modal reduction to this many undamped modes (None: full model).
     pub reduced_modes: Option<usize>,
-    /// Speed at which the reduction basis is computed [rpm].
+    /// Speed at which the reduction basis is computed \[rpm\].
     pub basis_speed_rpm: f64,
     /// Compute eigenvectors and classify forward/backward whirl.
     pub classify_whirl: bool,
@@ -63,6 +67,7 @@ impl Default for CampbellOptions {
 /// Modes at one speed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CampbellPoint {
+    /// Shaft speed \[rpm\].
     pub speed_rpm: f64,
     /// Ascending frequency.
     pub modes: Vec<Mode>,
@@ -71,20 +76,26 @@ pub struct CampbellPoint {
 /// A Campbell diagram.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CampbellDiagram {
+    /// One point per requested speed, in input order.
     pub points: Vec<CampbellPoint>,
 }
 
 /// A crossing of a whirl branch with an excitation line.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CriticalSpeed {
+    /// Critical speed \[rpm\], interpolated between diagram speeds (or refined
+    /// by [`refine_critical_speed`]).
     pub speed_rpm: f64,
+    /// Frequency at the crossing, harmonic x speed / 60 \[Hz\].
     pub frequency_hz: f64,
     /// Index of the branch (ascending frequency order).
     pub branch: usize,
     /// Excitation order (1 for 1X).
     pub harmonic: f64,
+    /// Whirl of the branch at the diagram speed nearest the crossing (at the
+    /// final trial speed after refinement).
     pub whirl: Whirl,
-    /// Neighbouring diagram speeds that bracket the crossing [rpm].
+    /// Neighbouring diagram speeds that bracket the crossing \[rpm\].
     pub bracket_rpm: [f64; 2],
 }
 
@@ -295,7 +306,7 @@ impl CampbellDiagram {
         out
     }
 
-    /// Frequencies of branch `k` over the speeds [Hz] (NaN where absent).
+    /// Frequencies of branch `k` over the speeds \[Hz\] (NaN where absent).
     pub fn branch_hz(&self, k: usize) -> Vec<f64> {
         self.points
             .iter()

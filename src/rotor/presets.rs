@@ -31,8 +31,8 @@
 //!   the overhang is neglected.
 //! * Bearings: placeholders until the bearing solver supplies the thermally
 //!   coupled 5x5 matrices: radial 1e8 N/m per bearing (the brief's order of
-//!   magnitude; seed B quotes up to 2.74e8, PHYSICS.md 8), axial 2.5e7 N/m,
-//!   no tilt stiffness per row (the pair's row spacing provides it), no
+//!   magnitude; seed B quotes up to 2.74e8, docs/concepts/physics.md §8),
+//!   axial 2.5e7 N/m, no tilt stiffness per row (the pair's row spacing provides it), no
 //!   bearing damping; 2 % modal damping ratio for the whole rotor-bearing
 //!   system at rest.
 //! * UMP (off by default): R = 34.7 mm, L = 120 mm, g0 = 0.3 mm, assumed
@@ -45,21 +45,21 @@ use super::{BearingCoefficients, BearingModel, BearingSupport, Disk, RotorSpec, 
 use crate::error::Result;
 use crate::materials::Material;
 
-/// Maximum service speed of the 170-30/15 class [rpm].
+/// Maximum service speed of the 170-30/15 class \[rpm\].
 pub const MAX_SPEED_RPM: f64 = 30_000.0;
-/// Rated power of the 170-30/15 class [W].
+/// Rated power of the 170-30/15 class \[W\].
 pub const RATED_POWER_W: f64 = 15_000.0;
-/// Tool nose (probe position for the shaft-end response) [m].
+/// Tool nose (probe position for the shaft-end response) \[m\].
 pub const NOSE_POSITION_M: f64 = 0.0;
-/// Front (7009C) pair load positions [m].
+/// Front (7009C) pair load positions \[m\].
 pub const FRONT_BEARING_POSITIONS_M: [f64; 2] = [0.032, 0.048];
-/// Rear (7008C) pair load positions [m].
+/// Rear (7008C) pair load positions \[m\].
 pub const REAR_BEARING_POSITIONS_M: [f64; 2] = [0.2925, 0.3075];
-/// Rotor core span [m].
+/// Rotor core span \[m\].
 pub const ROTOR_CORE_SPAN_M: (f64, f64) = (0.110, 0.230);
-/// Rotor core outer diameter [m] (70 mm stator bore - 2 x 0.3 mm air gap).
+/// Rotor core outer diameter \[m\] (70 mm stator bore - 2 x 0.3 mm air gap).
 pub const ROTOR_CORE_OUTER_DIAMETER_M: f64 = 0.0694;
-/// Air gap of seed B [m].
+/// Air gap of seed B \[m\].
 pub const AIR_GAP_M: f64 = 0.3e-3;
 
 /// Tunable inputs of the seed B spindle model.
@@ -73,13 +73,16 @@ pub struct SpindleParameters {
     pub axial_stiffness_n_per_m: f64,
     /// Radial damping of each row [N s/m].
     pub bearing_damping_n_s_per_m: f64,
+    /// Modal damping ratio of the rotor-bearing modes at rest [-]. Default
+    /// 0.02 (assumed; seed B gives none).
     pub modal_damping_ratio: f64,
+    /// Longest shaft finite element \[m\]. Default 0.02.
     pub max_element_length_m: f64,
     /// Include the unbalanced magnetic pull.
     pub magnetic_pull_enabled: bool,
-    /// RMS air-gap flux density [T].
+    /// RMS air-gap flux density \[T\].
     pub flux_density_t: f64,
-    /// Static eccentricity of the rotor core [m].
+    /// Static eccentricity of the rotor core \[m\].
     pub static_eccentricity_m: f64,
 }
 

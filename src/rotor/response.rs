@@ -22,11 +22,11 @@ use crate::units::rpm_to_rad_s;
 /// A point unbalance on the rotor.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Unbalance {
-    /// Axial position (a mesh node) [m].
+    /// Axial position (a mesh node) \[m\].
     pub position_m: f64,
     /// Unbalance U = mass x radius [kg m].
     pub unbalance_kg_m: f64,
-    /// Angular position at t = 0 [rad].
+    /// Angular position at t = 0 \[rad\].
     pub phase_rad: f64,
 }
 
@@ -76,12 +76,13 @@ pub fn unbalance_phasor(rotor: &Rotor, unbalances: &[Unbalance]) -> Result<DVect
 /// Steady response at one probe node and speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HarmonicResponse {
+    /// Shaft speed \[rpm\]; the unbalance excites 1X, Omega = 2 pi speed / 60.
     pub speed_rpm: f64,
-    /// x(t) = Re(X e^{i Omega t}) [m].
+    /// x(t) = Re(X e^{i Omega t}) \[m\].
     pub displacement_x_m: Complex<f64>,
-    /// y(t) = Re(Y e^{i Omega t}) [m].
+    /// y(t) = Re(Y e^{i Omega t}) \[m\].
     pub displacement_y_m: Complex<f64>,
-    /// Major semi-axis of the orbit |R_f| + |R_b| [m].
+    /// Major semi-axis of the orbit |R_f| + |R_b| \[m\].
     pub orbit_major_m: f64,
     /// Peak velocity in x, Omega |X| [m/s].
     pub velocity_peak_x_m_per_s: f64,

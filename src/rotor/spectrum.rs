@@ -70,7 +70,7 @@ pub fn fft_in_place(data: &mut [Complex<f64>]) -> Result<()> {
 }
 
 /// One-sided amplitude spectrum of a real signal with a Hann window,
-/// zero-padded to the next power of two. Returns (frequencies [Hz],
+/// zero-padded to the next power of two. Returns (frequencies \[Hz\],
 /// amplitudes [signal units, peak]).
 pub fn amplitude_spectrum(signal: &[f64], sample_rate_hz: f64) -> Result<(Vec<f64>, Vec<f64>)> {
     positive("sample_rate_hz", sample_rate_hz)?;

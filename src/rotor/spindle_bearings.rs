@@ -119,6 +119,8 @@ impl OffsetTable {
 /// Quasi-static state of one row (in its own frame) at one speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RowOperatingPoint {
+    /// Speed of the solve \[rpm\], always >= 0 (the quasi-static ball model
+    /// ignores the direction of rotation).
     pub speed_rpm: f64,
     /// Inner-ring displacement carrying the preload, row frame [m, rad].
     pub displacement_m_rad: [f64; 5],
@@ -128,7 +130,7 @@ pub struct RowOperatingPoint {
     pub stiffness_si: Matrix5<f64>,
     /// Mean orbital (cage) speed of the balls [rad/s].
     pub cage_speed_rad_s: f64,
-    /// Raceway offsets used [m].
+    /// Raceway offsets used \[m\].
     pub offsets: RacewayOffsets,
 }
 
@@ -239,6 +241,7 @@ pub fn to_shaft_frame(k_row: &Matrix5<f64>, mirrored: bool) -> Matrix5<f64> {
 /// One row of a pair on the shaft: the shared row solution, mirrored or not.
 #[derive(Debug, Clone)]
 pub struct SpindleRow {
+    /// The row solution (with its cache), shared by both rows of a pair.
     pub row: Arc<PreloadedRow>,
     /// Row's load direction is -z of the shaft (second row of a DB pair).
     pub mirrored: bool,
@@ -316,7 +319,7 @@ pub struct NonlinearBearingForces {
 }
 
 impl NonlinearBearingForces {
-    /// Nonlinear forces of the rows `rows` (axial position [m], row) of
+    /// Nonlinear forces of the rows `rows` (axial position \[m\], row) of
     /// `rotor` at `speed_rpm`; each position must be a node of the rotor.
     pub fn new(rotor: &Rotor, rows: &[(f64, SpindleRow)], speed_rpm: f64) -> Result<Self> {
         let mut out = Vec::with_capacity(rows.len());

@@ -41,8 +41,10 @@ pub enum RowMaterial {
 /// Inputs of a spindle vibration model.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SpindleVibrationConfig {
+    /// Steel or hybrid rows: the 7009C / 7008C presets or their `-hybrid`
+    /// variants.
     pub material: RowMaterial,
-    /// Constant-force axial preload of each pair [N] (400 N: seed B's test).
+    /// Constant-force axial preload of each pair \[N\] (400 N: seed B's test).
     pub preload_n: f64,
     /// Shaft, disks, modal damping, UMP data (the constant bearing
     /// stiffness fields of it are not used: the rows come from the solver).
@@ -74,16 +76,25 @@ impl SpindleVibrationConfig {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum UnbalanceSpec {
     /// ISO 21940-11 balance grade G [mm/s] at the maximum service speed.
-    Grade { grade_mm_per_s: f64 },
+    Grade {
+        /// Balance grade G = e_per Omega_max [mm/s], e.g. 2.5 for G2.5.
+        grade_mm_per_s: f64,
+    },
     /// Unbalance mass x radius [g mm].
-    MassRadius { unbalance_g_mm: f64 },
+    MassRadius {
+        /// Residual unbalance U = m r [g mm] (1 g mm = 1e-6 kg m), >= 0.
+        unbalance_g_mm: f64,
+    },
 }
 
 /// Shaft-end vibration at one speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct VibrationPoint {
+    /// Shaft speed \[rpm\].
     pub speed_rpm: f64,
+    /// RMS of the nose x velocity [mm/s] (steady response: 1X / sqrt 2).
     pub velocity_rms_mm_s: f64,
+    /// Largest |v_x| at the nose [mm/s] (steady response: the 1X amplitude).
     pub velocity_peak_mm_s: f64,
     /// 1X, 2X, 3X velocity amplitudes [mm/s].
     pub harmonics_mm_s: [f64; 3],
@@ -92,9 +103,11 @@ pub struct VibrationPoint {
 /// A time response at one speed and what it shows.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TimeVibration {
+    /// RMS, peak and 1X/2X/3X of the nose x velocity over the analysed window.
     pub point: VibrationPoint,
+    /// The whole recorded response, the discarded settling part included.
     pub history: TimeHistory,
-    /// Start of the analysed window [s] (the first part is discarded).
+    /// Start of the analysed window \[s\] (the first part is discarded).
     pub window_start_s: f64,
 }
 
@@ -185,15 +198,17 @@ impl SpindleVibration {
         Ok(SpindleVibration { config, rotor, rows })
     }
 
+    /// The configuration the model was built from.
     pub fn config(&self) -> &SpindleVibrationConfig {
         &self.config
     }
 
+    /// The assembled rotor: seed B shaft and disks on the four solver-based rows.
     pub fn rotor(&self) -> &Rotor {
         &self.rotor
     }
 
-    /// The rows (axial position [m], row) in support order.
+    /// The rows (axial position \[m\], row) in support order.
     pub fn rows(&self) -> &[(f64, SpindleRow)] {
         &self.rows
     }
@@ -311,7 +326,7 @@ impl SpindleVibration {
     }
 
     /// Amplitude spectrum (Hann window) of the nose velocity in x over the
-    /// analysed window of a time response: (frequency [Hz], amplitude [mm/s]).
+    /// analysed window of a time response: (frequency \[Hz\], amplitude [mm/s]).
     pub fn spectrum(&self, t: &TimeVibration) -> Result<(Vec<f64>, Vec<f64>)> {
         let dt = 1.0 / t.history.sample_rate_hz();
         let start = (t.window_start_s / dt).round() as usize;

@@ -3,8 +3,8 @@
 //! closure, e.g. the thermally coupled bearing solver).
 //!
 //! The 5x5 order is the bearing solver's ring-displacement order
-//! (PHYSICS.md 6): [delta_x, delta_y, delta_z, theta_x, theta_y]. The rotor
-//! model is lateral (4 DOF per node) and uses rows/columns [0, 1, 3, 4];
+//! (docs/concepts/physics.md §6): [delta_x, delta_y, delta_z, theta_x,
+//! theta_y]. The rotor model is lateral (4 DOF per node) and uses rows/columns [0, 1, 3, 4];
 //! the axial entry is carried for completeness and for the axial model of
 //! the spindle, not used by the lateral matrices.
 //!
@@ -170,9 +170,11 @@ impl BearingModel for SpeedTable {
 /// A bearing placed on the shaft.
 #[derive(Clone)]
 pub struct BearingSupport {
+    /// Label used in error messages (e.g. `7009C_front_A`).
     pub name: String,
-    /// Axial position of the bearing centre (load centre) from the shaft's left end [m].
+    /// Axial position of the bearing centre (load centre) from the shaft's left end \[m\].
     pub position_m: f64,
+    /// Source of the linearised coefficients as a function of shaft speed.
     pub model: Arc<dyn BearingModel>,
 }
 

@@ -35,7 +35,11 @@ pub trait NonlinearForce: Sync {
 /// A closure `f(time_s, q, q', force)` (adding into `force`) acting on the
 /// listed physical DOFs, as a [`NonlinearForce`].
 pub struct ForceFn<F> {
+    /// Physical DOF indices the force depends on (the columns of the
+    /// finite-difference tangent of the full model).
     pub dofs: Vec<usize>,
+    /// The closure `f(time_s, q, q', force)`; it must add into `force`, not
+    /// overwrite it.
     pub force: F,
 }
 
@@ -55,10 +59,14 @@ where
 /// Options of a time response.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TransientOptions {
+    /// Shaft speed \[rpm\], constant over the run: sets Omega in the gyroscopic
+    /// and bearing matrices and the unbalance force.
     pub speed_rpm: f64,
+    /// Simulated time \[s\]; the run takes round(duration_s / time_step_s) steps.
     pub duration_s: f64,
+    /// Newmark time step \[s\], at most `duration_s`.
     pub time_step_s: f64,
-    /// Node whose motion is recorded [m].
+    /// Node whose motion is recorded \[m\].
     pub probe_position_m: f64,
     /// Pseudo-modal reduction to this many modes (None: full model).
     pub reduced_modes: Option<usize>,
@@ -66,7 +74,7 @@ pub struct TransientOptions {
     pub tolerance: f64,
     /// Newton iterations per step before giving up.
     pub max_iterations: usize,
-    /// Any recorded displacement above this means divergence [m].
+    /// Any recorded displacement above this means divergence \[m\].
     pub divergence_limit_m: f64,
 }
 
@@ -104,10 +112,15 @@ impl TransientOptions {
 /// Recorded motion of the probe node and the final state.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TimeHistory {
+    /// Sample times from t = 0, one per time step \[s\].
     pub time_s: Vec<f64>,
+    /// Probe displacement x \[m\].
     pub displacement_x_m: Vec<f64>,
+    /// Probe displacement y \[m\].
     pub displacement_y_m: Vec<f64>,
+    /// Probe velocity in x [m/s].
     pub velocity_x_m_per_s: Vec<f64>,
+    /// Probe velocity in y [m/s].
     pub velocity_y_m_per_s: Vec<f64>,
     /// Physical displacement vector at the end [m, rad].
     pub final_displacement_si: DVector<f64>,
@@ -118,7 +131,7 @@ pub struct TimeHistory {
 }
 
 impl TimeHistory {
-    /// Sample rate of the record [Hz].
+    /// Sample rate of the record \[Hz\].
     pub fn sample_rate_hz(&self) -> f64 {
         if self.time_s.len() < 2 {
             return 0.0;
@@ -436,7 +449,7 @@ pub fn time_response(
     Ok(hist)
 }
 
-/// Mechanical energy 1/2 q'^T M q' + 1/2 q^T K q of a physical state [J].
+/// Mechanical energy 1/2 q'^T M q' + 1/2 q^T K q of a physical state \[J\].
 pub fn mechanical_energy_j(sys: &SystemMatrices, q: &DVector<f64>, qd: &DVector<f64>) -> f64 {
     0.5 * qd.dot(&(&sys.mass_si * qd)) + 0.5 * q.dot(&(&sys.stiffness_si * q))
 }
@@ -445,7 +458,9 @@ pub fn mechanical_energy_j(sys: &SystemMatrices, q: &DVector<f64>, qd: &DVector<
 /// over the record from `settle_s` on.
 #[derive(Debug, Clone, PartialEq)]
 pub struct VibrationSummary {
+    /// RMS of the x velocity after `settle_s` [m/s].
     pub velocity_rms_m_per_s: f64,
+    /// Largest |v_x| after `settle_s` [m/s].
     pub velocity_peak_m_per_s: f64,
     /// Amplitudes of 1X, 2X, 3X of the x velocity [m/s].
     pub velocity_orders_m_per_s: Vec<f64>,
