@@ -44,11 +44,17 @@ use crate::materials::Material;
 pub struct SystemConfig {
     /// Optional title.
     pub name: Option<String>,
+    /// User materials, the `[[material]]` tables (empty when none); looked
+    /// up by name before the presets in [`SystemConfig::material`].
     #[serde(default, rename = "material")]
     pub materials: Vec<MaterialConfig>,
+    /// The `[bearing]` section; required by [`SystemConfig::bearing`].
     pub bearing: Option<BearingConfig>,
+    /// The `[operating]` section: one speed and load case.
     pub operating: Option<OperatingConfig>,
+    /// The `[sweep]` section: the speeds of [`SystemConfig::speeds_rpm`].
     pub sweep: Option<SweepConfig>,
+    /// The `[model]` section: effect switches and coupled-thermal inputs.
     pub model: Option<ModelConfig>,
 }
 
@@ -56,13 +62,21 @@ pub struct SystemConfig {
 #[derive(Debug, Clone, Default, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct MaterialConfig {
+    /// Name the other sections use to refer to this material (required).
     pub name: String,
+    /// Preset to start from (a [`Material::PRESETS`] name or alias); default "52100".
     pub base: Option<String>,
+    /// Young's modulus E \[GPa\] (converted to Pa); overrides the base.
     pub youngs_modulus_gpa: Option<f64>,
+    /// Poisson's ratio nu [-], 0 to 0.4999; overrides the base.
     pub poisson_ratio: Option<f64>,
+    /// Density rho [kg/m^3]; overrides the base.
     pub density_kg_m3: Option<f64>,
+    /// Linear thermal expansion coefficient alpha [1/K], 0 to 1e-3; overrides the base.
     pub thermal_expansion_per_k: Option<f64>,
+    /// Thermal conductivity k [W/(m K)]; overrides the base.
     pub conductivity_w_mk: Option<f64>,
+    /// Specific heat capacity c [J/(kg K)]; overrides the base.
     pub specific_heat_j_kgk: Option<f64>,
 }
 
@@ -70,24 +84,45 @@ pub struct MaterialConfig {
 #[derive(Debug, Clone, Default, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct BearingConfig {
+    /// Bearing preset to start from (a [`Bearing::preset`] name, e.g. "6208", "7009C").
     pub preset: Option<String>,
+    /// Display name; default the preset's name, else "custom".
     pub name: Option<String>,
-    /// "deep-groove" or "angular-contact".
+    /// "deep-groove" or "angular-contact". Default: the preset's type; without
+    /// a preset, angular-contact if `free_contact_angle_deg` is given.
     #[serde(rename = "type")]
     pub bearing_type: Option<String>,
+    /// Number of balls Z.
     pub ball_count: Option<usize>,
+    /// Ball diameter D \[mm\].
     pub ball_diameter_mm: Option<f64>,
+    /// Pitch diameter dm \[mm\].
     pub pitch_diameter_mm: Option<f64>,
+    /// Inner groove conformity f_i = r_i / D [-] (> 0.5).
     pub inner_conformity: Option<f64>,
+    /// Outer groove conformity f_o = r_o / D [-] (> 0.5).
     pub outer_conformity: Option<f64>,
+    /// Diametral clearance Pd \[mm\]; read for a deep-groove bearing only
+    /// (its free contact angle follows from it).
     pub diametral_clearance_mm: Option<f64>,
+    /// Free (unloaded) contact angle alpha0 \[deg\]; read for an
+    /// angular-contact bearing only (its clearance follows from it).
     pub free_contact_angle_deg: Option<f64>,
+    /// Bore d \[mm\].
     pub bore_mm: Option<f64>,
+    /// Outside diameter D_o \[mm\].
     pub outer_diameter_mm: Option<f64>,
+    /// Width B \[mm\].
     pub width_mm: Option<f64>,
+    /// Material of both rings (user material or preset name); default the
+    /// preset's, else 52100.
     pub ring_material: Option<String>,
+    /// Ball material (user material or preset name); default the preset's, else 52100.
     pub ball_material: Option<String>,
+    /// Shaft material under the inner ring; default shaft steel.
     pub shaft_material: Option<String>,
+    /// Shaft bore diameter \[mm\]; 0 (default) for a solid shaft, must be
+    /// smaller than the bearing bore.
     pub shaft_bore_mm: Option<f64>,
 }
 
@@ -95,12 +130,16 @@ pub struct BearingConfig {
 #[derive(Debug, Clone, Default, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct OperatingConfig {
+    /// Shaft (inner-ring) speed \[rpm\]; default 0 (static solve).
     #[serde(default)]
     pub speed_rpm: f64,
+    /// Axial load Fz on the inner ring \[N\]; default 0.
     #[serde(default)]
     pub axial_n: f64,
+    /// Radial load Fx on the inner ring \[N\]; default 0.
     #[serde(default)]
     pub radial_n: f64,
+    /// Tilting moment My on the inner ring [N mm]; default 0.
     #[serde(default)]
     pub moment_nmm: f64,
 }
@@ -109,9 +148,13 @@ pub struct OperatingConfig {
 #[derive(Debug, Clone, Default, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct SweepConfig {
+    /// First speed of the evenly spaced range \[rpm\] (>= 0).
     pub speed_start_rpm: Option<f64>,
+    /// Last speed of the range, inclusive \[rpm\] (>= 0).
     pub speed_stop_rpm: Option<f64>,
+    /// Number of speeds in the range (>= 1).
     pub speed_count: Option<usize>,
+    /// Explicit speeds \[rpm\] (each >= 0); when given, the range keys are ignored.
     pub speeds_rpm: Option<Vec<f64>>,
 }
 
@@ -123,7 +166,7 @@ pub struct ModelConfig {
     pub effects: Option<Vec<String>>,
     /// "outer" (default) or "inner" raceway control.
     pub raceway_control: Option<String>,
-    /// Extra heat at the bearing [W] (coupled thermal model; see
+    /// Extra heat at the bearing \[W\] (coupled thermal model; see
     /// [`crate::thermal::coupled::CoupledOptions::extra_heat_w`]).
     pub extra_heat_w: Option<f64>,
     /// Housing-to-ambient conductance scale (coupled thermal model; see

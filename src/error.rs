@@ -6,14 +6,19 @@ use thiserror::Error;
 /// Result alias used throughout the crate.
 pub type Result<T> = std::result::Result<T, Error>;
 
+/// Everything that can go wrong in the crate: bad input, a solver that did
+/// not converge, a runaway, unusable data, or an interrupt.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum Error {
     /// A parameter or configuration value that is not physical or not allowed.
     /// `field` names the parameter as the user wrote it (with its unit suffix).
     #[error("invalid {field} = {value}: {reason}")]
     Config {
+        /// Parameter name, with its unit suffix (e.g. `ball_diameter_mm`).
         field: String,
+        /// The rejected value as text.
         value: String,
+        /// Why the value is rejected (e.g. "must be greater than zero").
         reason: String,
     },
     /// A system-description file that cannot be parsed (syntax, unknown key, type).
@@ -24,9 +29,13 @@ pub enum Error {
         "{solver} did not converge after {iterations} iterations: residual {residual:.3e} (tolerance {tolerance:.1e})"
     )]
     Convergence {
+        /// Name of the solver that gave up (e.g. "quasi-static").
         solver: String,
+        /// Iterations spent.
         iterations: usize,
+        /// Residual at the last iterate, in the solver's own measure.
         residual: f64,
+        /// The tolerance it had to meet, same measure as `residual`.
         tolerance: f64,
     },
     /// Heat and preload grow together without bound (thermo-mechanical runaway).

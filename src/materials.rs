@@ -8,8 +8,9 @@ use crate::error::{in_range, positive, Result};
 /// bearing and thermal models need.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Material {
+    /// Material name (preset name, e.g. "52100", or a user material's name).
     pub name: String,
-    /// Young's modulus E [Pa].
+    /// Young's modulus E \[Pa\].
     pub youngs_modulus_pa: f64,
     /// Poisson's ratio nu [-].
     pub poisson_ratio: f64,
@@ -29,7 +30,7 @@ impl Material {
     /// Bearing Analysis 5th ed., vol. 1, table of bearing steels);
     /// alpha = 12.5e-6 1/K, k = 42.7 W/(m K), c = 458 J/(kg K) (ASM Handbook
     /// vol. 1, 52100 at room temperature). Seed A Table 1 prints 1.36e-7 1/K
-    /// for the expansion coefficient, a typo for about 1.2e-5 (PHYSICS.md 8).
+    /// for the expansion coefficient, a typo for about 1.2e-5 (docs/concepts/physics.md §8).
     pub fn steel_52100() -> Self {
         Material {
             name: "52100".into(),
@@ -140,8 +141,8 @@ impl Material {
     }
 }
 
-/// Hertz reduced modulus E' = 2 / ((1-nu1^2)/E1 + (1-nu2^2)/E2) [Pa]
-/// (PHYSICS.md section 2; Harris & Kotzalas eq. 6.40 uses the same E').
+/// Hertz reduced modulus E' = 2 / ((1-nu1^2)/E1 + (1-nu2^2)/E2) \[Pa\]
+/// (docs/concepts/physics.md §2; Harris & Kotzalas eq. 6.40 uses the same E').
 pub fn reduced_modulus(a: &Material, b: &Material) -> f64 {
     2.0 / (a.hertz_compliance() + b.hertz_compliance())
 }

@@ -77,11 +77,11 @@ pub struct SpindleConfig {
     pub params: SpindleParams,
     /// Preload per bearing (both pairs).
     pub preload: Preload,
-    /// Working radial load at the spindle nose [N].
+    /// Working radial load at the spindle nose \[N\].
     pub radial_load_n: f64,
     /// Spin friction coefficient mu_s.
     pub spin_friction: f64,
-    /// Temperature at which the spindle was assembled (zero thermal offsets) [C].
+    /// Temperature at which the spindle was assembled (zero thermal offsets) \[C\].
     pub assembly_temperature_c: f64,
     /// Effects (high-speed bearing terms, thermal expansion by part,
     /// viscosity, unbalanced magnetic pull on the shaft).
@@ -93,7 +93,7 @@ pub struct SpindleConfig {
     pub magnetic_pull: Option<CoreMagneticPull>,
     /// Largest fixed-point iterations of the coupled steady state.
     pub max_iterations: usize,
-    /// Converged when no node temperature moves more than this [K].
+    /// Converged when no node temperature moves more than this \[K\].
     pub tolerance_k: f64,
 }
 
@@ -151,9 +151,16 @@ struct PairHeatModel {
 /// A spindle ready to solve.
 #[derive(Debug, Clone)]
 pub struct Spindle {
+    /// The configuration as built: `params.preload_n` and
+    /// `params.ball_conduction` follow the preload. Change it through
+    /// [`Spindle::with_preload`] / [`Spindle::with_radial_load`], which
+    /// rebuild what depends on it.
     pub config: SpindleConfig,
+    /// Front pair (two front bearings back-to-back, spacing = bearing width).
     pub front: BearingPair,
+    /// Rear pair (two rear bearings back-to-back, spacing = bearing width).
     pub rear: BearingPair,
+    /// The spindle thermal network built from `config.params`.
     pub network: SpindleNetwork,
     heat_front: PairHeatModel,
     heat_rear: PairHeatModel,
@@ -163,49 +170,59 @@ pub struct Spindle {
 /// Heat and mechanics of one bearing in a solved state.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BearingHeatReport {
+    /// Heat by mechanism: rolling omega (M1 + Mv), inner and outer spin \[W\].
     pub heat: BearingHeat,
+    /// Burton-Staph split to inner ring, balls, outer ring \[W\].
     pub split: HeatSplit,
-    /// Load and viscous moments [N m].
+    /// Palmgren load moment M1 (A-20) [N m].
     pub load_moment_n_m: f64,
+    /// Palmgren viscous moment Mv (A-21) [N m].
     pub viscous_moment_n_m: f64,
 }
 
 /// A solved spindle operating point.
 #[derive(Debug, Clone)]
 pub struct SpindleState {
+    /// Shaft speed \[rpm\].
     pub speed_rpm: f64,
+    /// Steady temperatures of every node of the spindle network \[C\].
     pub temperatures: Temperatures,
+    /// Front pair at the converged temperatures.
     pub front: PairState,
+    /// Rear pair at the converged temperatures.
     pub rear: PairState,
     /// Heat of bearings [front A, front B, rear A, rear B].
     pub bearing_heat: [BearingHeatReport; 4],
-    /// Motor losses [W].
+    /// Motor losses \[W\].
     pub motor_losses_w: f64,
-    /// Sum of all heat sources [W].
+    /// Sum of all heat sources \[W\].
     pub total_heat_w: f64,
-    /// Heat leaving through the boundaries [W] (equals total_heat_w at steady state).
+    /// Heat leaving through the boundaries \[W\] (equals total_heat_w at steady state).
     pub boundary_flow_w: f64,
-    /// Thermal offsets of the front and rear pairs.
+    /// Thermal offsets of the front pair (one bearing; both share them).
     pub front_offsets: ThermalOffsets,
+    /// Thermal offsets of the rear pair (one bearing; both share them).
     pub rear_offsets: ThermalOffsets,
-    /// Axial growth of the shaft relative to the housing between the sets [m].
+    /// Axial growth of the shaft relative to the housing between the sets \[m\].
     pub axial_growth_m: f64,
-    /// Fixed-point iterations and the last temperature change [K].
+    /// Fixed-point iterations used.
     pub iterations: usize,
+    /// Largest node temperature change of the last iteration \[K\].
     pub temperature_change_k: f64,
-    /// (preload_n, bearing heat W, change K) per fixed-point iteration.
+    /// (front preload N, bearing heat W, change K) per fixed-point
+    /// iteration; the first entry is the cold start (change infinite).
     pub history: Vec<(f64, f64, f64)>,
 }
 
 impl SpindleState {
     /// Radial thermal displacement of the front bearing: the radial
     /// groove-centre interference u_Tr plus the projected free-gap change
-    /// (ball growth), [`ThermalOffsets::radial_with_gap_m`] [m].
+    /// (ball growth), [`ThermalOffsets::radial_with_gap_m`] \[m\].
     pub fn front_radial_thermal_displacement_m(&self, free_contact_angle_rad: f64) -> f64 {
         self.front_offsets.radial_with_gap_m(free_contact_angle_rad)
     }
 
-    /// Temperature of a node by name [C].
+    /// Temperature of a node by name \[C\].
     pub fn temperature_c(&self, node: &str) -> Result<f64> {
         self.temperatures.get(node)
     }
@@ -329,7 +346,7 @@ impl Spindle {
 
     /// Radial loads on the front and rear pairs from the nose load, along x
     /// (lever rule with the load at c = -a in front of the front pair,
-    /// [`super::shaft_loads::lever_rule_n`]: front F (1 + a/L), rear -F a/L) [N].
+    /// [`super::shaft_loads::lever_rule_n`]: front F (1 + a/L), rear -F a/L) \[N\].
     pub fn pair_radial_loads_n(&self) -> Result<(f64, f64)> {
         let p = &self.config.params;
         super::shaft_loads::lever_rule_n(
@@ -339,7 +356,7 @@ impl Spindle {
         )
     }
 
-    /// Static unbalanced magnetic pull on the shaft, along +y [N]: the
+    /// Static unbalanced magnetic pull on the shaft, along +y \[N\]: the
     /// configured pull with the `UnbalancedMagneticPull` effect on, else 0.
     pub fn magnetic_pull_n(&self) -> f64 {
         match &self.config.magnetic_pull {
@@ -349,7 +366,7 @@ impl Spindle {
     }
 
     /// Shares of the front and rear pairs of the magnetic pull, along +y
-    /// (lever rule on the rigid shaft, [`super::shaft_loads`]) [N].
+    /// (lever rule on the rigid shaft, [`super::shaft_loads`]) \[N\].
     pub fn pair_magnetic_pull_n(&self) -> Result<(f64, f64)> {
         let p = &self.config.params;
         let at = self
@@ -417,7 +434,7 @@ impl Spindle {
     }
 
     /// Axial growth of the shaft relative to the housing between the front
-    /// and rear pair centres at node temperatures `t` [m] (positive: the
+    /// and rear pair centres at node temperatures `t` \[m\] (positive: the
     /// shaft grows more).
     pub fn axial_growth_m(&self, t: &[f64]) -> f64 {
         let n = &self.network;
@@ -449,7 +466,7 @@ impl Spindle {
     }
 
     /// The part of the axial growth between the sets `growth_m` that
-    /// reaches the preload spring [m]: all of it with
+    /// reaches the preload spring \[m\]: all of it with
     /// [`Effect::PreloadChangeFromAxialGrowth`] on, none with it off (ideal
     /// constant-force preload). A rigid pair ignores it (its rear set floats).
     pub fn spring_growth_m(&self, growth_m: f64) -> f64 {
@@ -460,7 +477,7 @@ impl Spindle {
         }
     }
 
-    /// Motor losses per node [W] at `speed_rpm` (same law as the network preset).
+    /// Motor losses per node \[W\] at `speed_rpm` (same law as the network preset).
     fn motor_sources(&self, speed_rpm: f64, s: &mut [f64]) -> f64 {
         let p = &self.config.params;
         let r = speed_rpm / p.loss_reference_rpm;
@@ -824,7 +841,7 @@ fn runaway_error(history: &[(f64, f64, f64)], speed_rpm: f64, why: &str) -> Erro
 
 /// Time at which `node` of a transient first comes within `fraction` of its
 /// rise to `steady_c` and stays there, and the time it first stays within
-/// `band_k` of it [s] (None if never).
+/// `band_k` of it \[s\] (None if never).
 pub fn settling_times_s(
     run: &Transient,
     node: usize,
@@ -849,15 +866,16 @@ pub fn settling_times_s(
 /// Compensation preload (seed B Fig. 17) at one speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CompensationPoint {
+    /// Shaft speed \[rpm\].
     pub speed_rpm: f64,
-    /// Axial growth of the shaft relative to the housing between the sets [m].
+    /// Axial growth of the shaft relative to the housing between the sets \[m\].
     pub axial_growth_m: f64,
-    /// k_s u_axial [N] (bearings rigid compared with the spring); 0 with
+    /// k_s u_axial \[N\] (bearings rigid compared with the spring); 0 with
     /// [`Effect::PreloadChangeFromAxialGrowth`] off (the growth does not
     /// reach the spring).
     pub compensation_preload_n: f64,
     /// Preload change of the front pair from the coupled solve, spring in
-    /// series with the bearings' own axial compliance [N].
+    /// series with the bearings' own axial compliance \[N\].
     pub solved_preload_change_n: f64,
 }
 
@@ -892,32 +910,37 @@ pub fn compensation_preload(
 /// One point of a speed x preload x load grid.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GridPoint {
+    /// Shaft speed \[rpm\].
     pub speed_rpm: f64,
+    /// Preload force per bearing at assembly F0 \[N\].
     pub preload_n: f64,
+    /// Working radial load at the spindle nose \[N\].
     pub radial_load_n: f64,
-    /// Front ball, inner and outer ring temperatures [C].
+    /// Temperature of the front pair's ball node \[C\].
     pub front_balls_c: f64,
+    /// Temperature of the front pair's inner-ring node \[C\].
     pub front_inner_c: f64,
+    /// Temperature of the front pair's outer-ring node \[C\].
     pub front_outer_c: f64,
-    /// Operating preload of the front pair [N].
+    /// Operating preload of the front pair \[N\].
     pub operating_preload_n: f64,
-    /// Total bearing heat [W].
+    /// Total bearing heat \[W\].
     pub bearing_heat_w: f64,
     /// Radial displacement of the front pair under its radial load at speed,
-    /// cold geometry [m].
+    /// cold geometry \[m\].
     pub mechanical_radial_displacement_m: f64,
-    /// Radial thermal displacement of the front bearing [m].
+    /// Radial thermal displacement of the front bearing \[m\].
     pub thermal_radial_displacement_m: f64,
     /// Radial stiffness K_xx of the front pair, coupled thermal state [N/m].
     pub front_radial_stiffness_n_per_m: f64,
     /// Same, cold geometry at speed [N/m].
     pub front_radial_stiffness_isothermal_n_per_m: f64,
-    /// Axial growth between the sets [m].
+    /// Axial growth between the sets \[m\].
     pub axial_growth_m: f64,
 }
 
 impl GridPoint {
-    /// Total radial displacement of seed B Figs. 15-16 [m].
+    /// Total radial displacement of seed B Figs. 15-16 \[m\].
     pub fn total_radial_displacement_m(&self) -> f64 {
         self.mechanical_radial_displacement_m + self.thermal_radial_displacement_m
     }
@@ -983,8 +1006,12 @@ pub fn spindle_grid(
 /// Optimal preload at one speed (seed B Figs. 15-16).
 #[derive(Debug, Clone, PartialEq)]
 pub struct OptimalPreload {
+    /// Shaft speed \[rpm\].
     pub speed_rpm: f64,
+    /// The scanned preload with the least total radial displacement \[N\]
+    /// (the first one on a tie).
     pub optimal_preload_n: f64,
+    /// Its total radial displacement, [`GridPoint::total_radial_displacement_m`] \[m\].
     pub min_radial_displacement_m: f64,
     /// Every scanned point at this speed.
     pub scan: Vec<GridPoint>,

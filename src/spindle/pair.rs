@@ -46,14 +46,22 @@ use crate::error::{finite, non_negative, positive, Error, Result};
 pub enum Preload {
     /// Fixed axial positions with the interference that gives `force_n`
     /// per bearing at zero speed and uniform assembly temperature.
-    Rigid { force_n: f64 },
+    Rigid {
+        /// Preload force per bearing F0 at assembly \[N\], > 0.
+        force_n: f64,
+    },
     /// Spring preload: `force_n` at assembly plus `rate_n_per_m` times the
     /// extra spring compression.
-    Spring { force_n: f64, rate_n_per_m: f64 },
+    Spring {
+        /// Spring force at assembly F0 \[N\], > 0.
+        force_n: f64,
+        /// Spring rate k_s [N/m], >= 0 (0: constant force F0).
+        rate_n_per_m: f64,
+    },
 }
 
 impl Preload {
-    /// Preload force at assembly F0 [N].
+    /// Preload force at assembly F0 \[N\].
     pub fn force_n(self) -> f64 {
         match self {
             Preload::Rigid { force_n } | Preload::Spring { force_n, .. } => force_n,
@@ -77,7 +85,7 @@ pub struct PairLoad {
     /// Thermal (or fit) offsets of the groove centres of bearings A and B
     /// each in its own frame.
     pub offsets: [RacewayOffsets; 2],
-    /// Axial growth that compresses the preload spring [m] (spring preload
+    /// Axial growth that compresses the preload spring \[m\] (spring preload
     /// only; ignored for a rigid pair, whose floating partner takes it).
     pub spring_growth_m: f64,
 }
@@ -89,11 +97,11 @@ pub struct PairState {
     pub displacement_m_rad: [f64; 5],
     /// Bearing states A and B (each in its own frame).
     pub bearings: [BearingState; 2],
-    /// Axial force of bearing A and B on their inner rings (local, loading positive) [N].
+    /// Axial force of bearing A and B on their inner rings (local, loading positive) \[N\].
     pub axial_force_n: [f64; 2],
-    /// Preload: the mean axial force of the two bearings [N].
+    /// Preload: the mean axial force of the two bearings \[N\].
     pub preload_n: f64,
-    /// Extra spring compression x [m] (0 for a rigid pair).
+    /// Extra spring compression x \[m\] (0 for a rigid pair).
     pub spring_compression_m: f64,
     /// Pair stiffness at the pair centre, sum_k T_k^T K_k T_k (SI blocks).
     pub stiffness_matrix_si: [[f64; 5]; 5],
@@ -104,14 +112,22 @@ pub struct PairState {
 /// A back-to-back pair prepared for solving.
 #[derive(Debug, Clone)]
 pub struct BearingPair {
+    /// Bearing A at z = -s/2, in the global frame.
     pub model_a: BearingModel,
+    /// Bearing B at z = +s/2, mirrored (its outer ring floats on a spring preload).
     pub model_b: BearingModel,
-    /// Centre spacing s of the two bearings [m].
+    /// Centre spacing s of the two bearings \[m\].
     pub spacing_m: f64,
+    /// The preload; change it with [`BearingPair::with_preload`], which
+    /// recomputes `interference_m`.
     pub preload: Preload,
-    /// Axial interference per bearing c0 [m] (local dz of each bearing at
+    /// Axial interference per bearing c0 \[m\] (local dz of each bearing at
     /// assembly under the preload force, zero speed).
     pub interference_m: f64,
+    /// Solve options of both bearings (effects, ...); `tolerance` and
+    /// `max_iterations` also drive the pair's Newton iteration (tolerance
+    /// relative to the larger of the preload and the largest external load);
+    /// `offsets` is replaced by [`PairLoad::offsets`].
     pub options: SolveOptions,
 }
 
@@ -128,7 +144,9 @@ struct Residual {
 /// the per-ball solutions of both bearings.
 #[derive(Debug, Clone, Default)]
 pub struct PairWarm {
+    /// Shaft displacement at the pair centre [x, y, z, theta_x, theta_y] (m, rad).
     pub displacement_m_rad: [f64; 5],
+    /// Extra spring compression x \[m\] (0 for a rigid pair).
     pub spring_compression_m: f64,
     balls: [WarmStart; 2],
 }

@@ -39,7 +39,7 @@ use crate::rotor::UnbalancedMagneticPull;
 
 /// Loads carried by the front and rear pairs, at each pair centre, of a
 /// radial force `force_n` at `position_from_front_m` on a rigid shaft whose
-/// pair centres are `span_m` apart (lever rule, module docs) [N].
+/// pair centres are `span_m` apart (lever rule, module docs) \[N\].
 pub fn lever_rule_n(force_n: f64, position_from_front_m: f64, span_m: f64) -> Result<(f64, f64)> {
     finite("radial_force_n", force_n)?;
     finite("position_from_front_m", position_from_front_m)?;
@@ -61,11 +61,11 @@ pub struct CoreMagneticPull {
     /// `Effect::UnbalancedMagneticPull` (and `pull.enabled`).
     pub pull: UnbalancedMagneticPull,
     /// Axial distance from the front pair centre to the rotor-core centre,
-    /// towards the rear pair [m].
+    /// towards the rear pair \[m\].
     pub core_from_front_pair_m: f64,
 }
 
-/// Centre of a pair from its two row positions [m].
+/// Centre of a pair from its two row positions \[m\].
 fn pair_centre_m(rows_m: [f64; 2]) -> f64 {
     0.5 * (rows_m[0] + rows_m[1])
 }
@@ -108,13 +108,13 @@ impl CoreMagneticPull {
         Ok(())
     }
 
-    /// Static pull F = k_ump e_static along +y [N] (0 when `pull.enabled` is false).
+    /// Static pull F = k_ump e_static along +y \[N\] (0 when `pull.enabled` is false).
     pub fn static_force_n(&self) -> f64 {
         self.pull.static_force_n()
     }
 
     /// The pull's share of the front and rear pairs (along +y) for pair
-    /// centres `span_m` apart [N].
+    /// centres `span_m` apart \[N\].
     pub fn pair_loads_n(&self, span_m: f64) -> Result<(f64, f64)> {
         lever_rule_n(self.static_force_n(), self.core_from_front_pair_m, span_m)
     }

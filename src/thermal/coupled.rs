@@ -1,5 +1,5 @@
 //! The coupled thermo-mechanical fixed point of one bearing in its thermal
-//! network (seed A Fig. 7; PHYSICS.md section 1, the coupling chain).
+//! network (seed A Fig. 7; docs/concepts/physics.md §1, the coupling chain).
 //!
 //! One iteration maps node temperatures T to new node temperatures:
 //!
@@ -84,10 +84,10 @@ pub struct CoupledOptions {
     /// default 0.06, a typical traction coefficient of a steel EHL contact
     /// (Harris & Kotzalas, traction curves 0.03..0.1). Assumption.
     pub spin_friction: f64,
-    /// Assembly (reference) temperature of the clearance and fits [C];
+    /// Assembly (reference) temperature of the clearance and fits \[C\];
     /// `None`: the ambient temperature of the network.
     pub reference_temperature_c: Option<f64>,
-    /// Extra heat at the bearing [W] beyond the modelled friction (e.g. the
+    /// Extra heat at the bearing \[W\] beyond the modelled friction (e.g. the
     /// friction of a magnetic pull load the model does not apply, seed B),
     /// split like rolling friction heat (Burton-Staph, A-27: 1/4 inner ring,
     /// 1/2 balls, 1/4 outer ring). Calibration input; default 0.
@@ -105,10 +105,11 @@ pub struct CoupledOptions {
     /// sheds heat better (fins, air flow, conduction into the machine) or
     /// worse than the bare cylinder assumed. Calibration input; default 1.
     pub housing_conductance_scale: f64,
-    /// Largest node temperature change at convergence [K].
+    /// Largest node temperature change at convergence \[K\].
     pub tolerance_k: f64,
-    /// Largest change of the raceway offsets at convergence [m].
+    /// Largest change of the raceway offsets at convergence \[m\].
     pub tolerance_m: f64,
+    /// Most fixed-point iterations before [`Error::Convergence`] (>= 1; default 200).
     pub max_iterations: usize,
 }
 
@@ -174,18 +175,22 @@ pub fn seed_a_mounting(params: &SeedAParams) -> Mounting {
 /// Heat of one operating point, by mechanism.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HeatReport {
-    /// Palmgren load moment M1 [N m] and viscous moment Mv [N m].
+    /// Palmgren load moment M1 (A-20) [N m].
     pub load_moment_n_m: f64,
+    /// Palmgren viscous moment Mv (A-21) [N m].
     pub viscous_moment_n_m: f64,
-    /// omega M1 and omega Mv [W].
+    /// Load friction heat omega M1 \[W\].
     pub load_w: f64,
+    /// Viscous friction heat omega Mv \[W\].
     pub viscous_w: f64,
-    /// Oil temperature and kinematic viscosity used in Mv [C], [cSt].
+    /// Oil temperature used in Mv and in the oil density \[C\]: the ball node
+    /// with `temperature_dependent_viscosity` on, else the oil-air supply.
     pub oil_temperature_c: f64,
+    /// Kinematic viscosity of the lubricant at `oil_temperature_c` used in Mv \[cSt\].
     pub viscosity_cst: f64,
-    /// Extra heat of [`CoupledOptions::extra_heat_w`] [W].
+    /// Extra heat of [`CoupledOptions::extra_heat_w`] \[W\].
     pub extra_w: f64,
-    /// Ball drag ("churning") heat at [`CoupledOptions::churning_oil_fraction`] [W].
+    /// Ball drag ("churning") heat at [`CoupledOptions::churning_oil_fraction`] \[W\].
     pub churning_w: f64,
     /// Cage speed used by the drag heat: the mean orbit speed of the balls
     /// of the solved state [rad/s].
@@ -193,14 +198,14 @@ pub struct HeatReport {
     /// Oil density at the oil temperature [kg/m^3].
     pub oil_density_kg_m3: f64,
     /// All mechanisms (rolling = load + viscous + extra + churning, inner
-    /// and outer spin) [W].
+    /// and outer spin) \[W\].
     pub heat: BearingHeat,
-    /// Burton-Staph split (A-27) [W].
+    /// Burton-Staph split \[W\].
     pub split: HeatSplit,
 }
 
 /// Load-weighted mean inner contact angle of the loaded balls; the free
-/// angle when no ball carries load [rad].
+/// angle when no ball carries load \[rad\].
 pub fn mean_inner_contact_angle_rad(bearing: &Bearing, state: &BearingState) -> f64 {
     let (qa, q) = state.balls.iter().fold((0.0, 0.0), |(qa, q), b| {
         (qa + b.inner_load_n * b.inner_contact_angle_rad, q + b.inner_load_n)
@@ -316,14 +321,17 @@ pub fn operating_heat(
 /// Result of the coupled fixed point.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ThermalState {
+    /// Shaft speed of the operating point \[rpm\].
     pub speed_rpm: f64,
-    /// Node names and steady temperatures [C] (boundaries included).
+    /// Node names of the network, in node order (boundaries included).
     pub node_names: Vec<String>,
+    /// Steady node temperatures, one per entry of `node_names` \[C\].
     pub temperatures_c: Vec<f64>,
-    /// Heat flowing out through each boundary node [W].
+    /// Heat flowing out through each boundary node \[W\].
     pub boundary_flows_w: Vec<(String, f64)>,
+    /// Heat by mechanism at the converged state (the last iteration's heat).
     pub heat: HeatReport,
-    /// Component rises over the reference temperature [K].
+    /// Component rises over the reference temperature \[K\].
     pub rises: ComponentRises,
     /// Thermal displacements of every part (switched effects give zero).
     pub offsets: ThermalOffsets,
@@ -333,14 +341,14 @@ pub struct ThermalState {
     pub bearing: BearingState,
     /// Fixed-point iterations used.
     pub iterations: usize,
-    /// Last largest node temperature change [K].
+    /// Last largest node temperature change \[K\].
     pub residual_k: f64,
-    /// Last change of the raceway offsets [m].
+    /// Last change of the raceway offsets \[m\].
     pub offset_change_m: f64,
 }
 
 impl ThermalState {
-    /// Temperature of a named node [C].
+    /// Temperature of a named node \[C\].
     pub fn temperature_c(&self, node: &str) -> Result<f64> {
         self.node_names
             .iter()
@@ -413,12 +421,16 @@ impl CoupledBearing {
         Self::new(bearing, params, mounting, options)
     }
 
+    /// The bearing model (geometry, Hertz constants) solved at each iteration.
     pub fn model(&self) -> &BearingModel {
         &self.model
     }
+    /// The coupled options this bearing was built with.
     pub fn options(&self) -> &CoupledOptions {
         &self.options
     }
+    /// The seed A network parameters as given (before
+    /// [`CoupledOptions::housing_conductance_scale`] is applied).
     pub fn params(&self) -> &SeedAParams {
         &self.params
     }
@@ -619,7 +631,7 @@ impl CoupledBearing {
 }
 
 /// The point of the segment from `t` to `next` where it leaves the
-/// temperatures at or below `bound` [C] (all of `next` when it stays
+/// temperatures at or below `bound` \[C\] (all of `next` when it stays
 /// below); `None` when `t` already sits at the bound and `next` goes beyond
 /// it (no step towards the bound is left).
 pub fn toward_bound(t: &[f64], next: &[f64], bound: f64) -> Option<Vec<f64>> {
@@ -674,6 +686,7 @@ pub enum StiffnessMode {
 }
 
 impl StiffnessMode {
+    /// The mode named "constant", "speed" or "thermal" (exact, lower case).
     pub fn from_name(name: &str) -> Result<Self> {
         match name {
             "constant" => Ok(StiffnessMode::Constant),

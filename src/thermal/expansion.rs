@@ -1,6 +1,6 @@
 //! Thermal deformation of shaft, rings, balls and housing and the shift it
-//! causes between the inner and outer groove curvature centres (PHYSICS.md
-//! section 5, eqs ).
+//! causes between the inner and outer groove curvature centres
+//! (docs/concepts/physics.md §5, eqs ).
 //!
 //! # Convention (what the bearing solver receives)
 //!
@@ -72,8 +72,8 @@
 //!   growth of housing and shaft from their common axial datum is right in
 //!   form; its sign depends on which side of the datum the bearing sits and
 //!   which way its contact faces (we expose `axial_sign`); the /2 (not in
-//!   PHYSICS.md) shares the growth between the two bearings of a pair; we
-//!   leave it to the caller.
+//!   docs/concepts/physics.md §5) shares the growth between the two bearings
+//!   of a pair; we leave it to the caller.
 
 use crate::bearing::Bearing;
 use crate::effects::{Effect, EffectSet};
@@ -92,15 +92,18 @@ pub enum RingFit {
 /// Shaft, housing and fits around one bearing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Mounting {
+    /// Housing material (its expansion, and its Lamé compliance for a tight outer fit).
     pub housing: Material,
-    /// Outside diameter of the housing wall around the bearing seat [m].
+    /// Outside diameter of the housing wall around the bearing seat \[m\].
     pub housing_outer_diameter_m: f64,
     /// Axial distance from the shaft's axial datum (locating point) to the
-    /// bearing, L_s [m].
+    /// bearing, L_s \[m\].
     pub shaft_length_m: f64,
-    /// Axial distance from the housing's axial datum to the bearing, L_h [m].
+    /// Axial distance from the housing's axial datum to the bearing, L_h \[m\].
     pub housing_length_m: f64,
+    /// Fit of the inner ring on the shaft.
     pub inner_fit: RingFit,
+    /// Fit of the outer ring in the housing.
     pub outer_fit: RingFit,
     /// Use the seed's plane-strain factor (1 + nu) for shaft and housing.
     pub plane_strain: bool,
@@ -131,17 +134,22 @@ impl Mounting {
     }
 }
 
-/// Temperature rises above the assembly (reference) temperature [K].
+/// Temperature rises above the assembly (reference) temperature \[K\].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ComponentRises {
+    /// Shaft rise dT_s \[K\].
     pub shaft_k: f64,
+    /// Inner ring rise dT_i \[K\].
     pub inner_ring_k: f64,
+    /// Ball rise dT_b \[K\] (all balls alike).
     pub balls_k: f64,
+    /// Outer ring rise dT_o \[K\].
     pub outer_ring_k: f64,
+    /// Housing rise dT_h \[K\].
     pub housing_k: f64,
 }
 
-/// Thermal displacements of one bearing (radial quantities are radii) [m].
+/// Thermal displacements of one bearing (radial quantities are radii) \[m\].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ThermalOffsets {
     /// Outward growth of the shaft surface at the seat (after the fit).
@@ -160,8 +168,11 @@ pub struct ThermalOffsets {
     pub outer_groove_radius_growth_m: f64,
     /// Change of the free groove-centre gap dA = dr_i + dr_o - dD.
     pub free_gap_change_m: f64,
-    /// Fit pressure changes (positive = tighter) [Pa].
+    /// Change of the inner-ring/shaft fit pressure (positive = tighter) \[Pa\];
+    /// 0 for a loose fit.
     pub inner_fit_pressure_change_pa: f64,
+    /// Change of the outer-ring/housing fit pressure (positive = tighter) \[Pa\];
+    /// 0 for a loose fit.
     pub outer_fit_pressure_change_pa: f64,
     /// u_Tr = u_ic - u_oc, added to A2 (positive = more interference).
     pub radial_m: f64,

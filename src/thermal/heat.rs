@@ -1,6 +1,6 @@
-//! Bearing friction heat (PHYSICS.md section 4, eqs A-20 to A-27; Palmgren's
-//! empirical moments as given by Harris & Kotzalas, *Rolling Bearing
-//! Analysis*, 4th/5th ed., chapter "Friction in rolling bearings").
+//! Bearing friction heat (docs/concepts/physics.md §4, eqs A-20 to A-27;
+//! Palmgren's empirical moments as given by Harris & Kotzalas, *Rolling
+//! Bearing Analysis*, 4th/5th ed., chapter "Friction in rolling bearings").
 //!
 //! Everything here takes plain per-bearing or per-contact numbers (loads,
 //! contact angle, Hertz semi-major axes, elliptic integrals, spin speeds) so
@@ -12,9 +12,10 @@
 //!   (also: thrust ball z = 0.0008, y = 0.33; self-aligning z = 0.0003,
 //!   y = 0.40). We use z = 0.0005 (mid range) for deep-groove bearings.
 //!   P1 (Harris): deep-groove `0.9 Fa cot(alpha) - 0.1 Fr`; single-row
-//!   angular-contact `Fa - 0.1 Fr`; in both cases P1 >= Fr. PHYSICS.md
-//!   quotes the deep-groove form for "ball bearings"; Harris uses the
-//!   angular-contact form for 7000-series bearings and so do we.
+//!   angular-contact `Fa - 0.1 Fr`; in both cases P1 >= Fr.
+//!   docs/concepts/physics.md §4 quotes the deep-groove form for "ball
+//!   bearings"; Harris uses the angular-contact form for 7000-series
+//!   bearings and so do we.
 //!   P0 is the ISO 76 static equivalent load `max(X0 Fr + Y0 Fa, Fr)`.
 //! * Static load rating C0 (ISO 76:2006, radial ball bearings):
 //!   `C0 = f0 i Z D^2 cos(alpha)` [N with D in mm], f0 tabulated against
@@ -26,8 +27,8 @@
 //!   drops by 0.79 % when nu n crosses 2000 upwards. We keep Palmgren's
 //!   published constants and document the step (tested).
 //!   f0 (lubrication factor): oil mist / oil-air 1-2, oil bath 2-4
-//!   (PHYSICS.md; Harris table: deep groove oil mist 1, oil bath 2;
-//!   angular contact oil mist 1.7, oil bath 3.3).
+//!   (docs/concepts/physics.md §4; Harris table: deep groove oil mist 1,
+//!   oil bath 2; angular contact oil mist 1.7, oil bath 3.3).
 //! * Spin moment per contact (A-22): `Ms = (3/8) mu_s Q a E(kappa)`.
 //! * Heat (A-23): `H = omega (M1 + Mv) + sum_j (|omega_si| Msi + |omega_so| Mso)`.
 //! * Split (A-27, Burton & Staph): the rolling part omega (M1 + Mv) goes
@@ -76,7 +77,7 @@ pub fn iso76_f0(gamma: f64) -> Result<f64> {
 }
 
 /// Basic static radial load rating C0 of a single-row radial ball bearing
-/// (ISO 76: C0 = f0 i Z D^2 cos(alpha), N with D in mm, i = 1 row) [N].
+/// (ISO 76: C0 = f0 i Z D^2 cos(alpha), N with D in mm, i = 1 row) \[N\].
 pub fn static_load_rating_n(geometry: &BearingGeometry) -> Result<f64> {
     let alpha = geometry.free_contact_angle_rad;
     let d_mm = geometry.ball_diameter_m * 1e3;
@@ -85,7 +86,7 @@ pub fn static_load_rating_n(geometry: &BearingGeometry) -> Result<f64> {
     Ok(f0 * geometry.ball_count as f64 * d_mm * d_mm * alpha.cos())
 }
 
-/// ISO 76 static equivalent radial load P0 = max(X0 Fr + Y0 Fa, Fr) [N].
+/// ISO 76 static equivalent radial load P0 = max(X0 Fr + Y0 Fa, Fr) \[N\].
 /// X0, Y0: deep-groove 0.6 / 0.5; single-row angular-contact 0.5 and Y0 by
 /// nominal contact angle 15/20/25/30/35/40/45 deg -> 0.46/0.42/0.38/0.33/
 /// 0.29/0.26/0.22 (linear between table angles).
@@ -109,7 +110,9 @@ pub fn static_equivalent_load_n(geometry: &BearingGeometry, axial_n: f64, radial
 /// Palmgren load-friction constants z, y of f1 = z (P0/C0)^y.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LoadFrictionConstants {
+    /// Coefficient z [-] (Harris: deep-groove 0.0004 to 0.0006, angular-contact 0.001).
     pub z: f64,
+    /// Exponent y of the load ratio P0/C0 [-] (Harris: deep-groove 0.55, angular-contact 0.33).
     pub y: f64,
 }
 
@@ -130,7 +133,7 @@ pub fn load_friction_factor(constants: LoadFrictionConstants, p0_n: f64, c0_n: f
     Ok(constants.z * (p0_n / c0_n).powf(constants.y))
 }
 
-/// Load of the friction moment P1 (Harris) [N]; `contact_angle_rad` is the
+/// Load of the friction moment P1 (Harris) \[N\]; `contact_angle_rad` is the
 /// operating contact angle (needed for deep-groove bearings under thrust).
 pub fn friction_load_p1_n(
     bearing_type: BearingType,
@@ -202,9 +205,9 @@ pub fn spin_moment_n_m(spin_friction: f64, load_n: f64, semi_major_m: f64, ellip
 /// One ball-raceway contact as seen by the heat model.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SpinContact {
-    /// Normal contact load Q [N].
+    /// Normal contact load Q \[N\].
     pub load_n: f64,
-    /// Hertz semi-major axis a [m].
+    /// Hertz semi-major axis a \[m\].
     pub semi_major_m: f64,
     /// Complete elliptic integral of the second kind E(kappa) [-].
     pub elliptic_e: f64,
@@ -212,27 +215,30 @@ pub struct SpinContact {
     pub spin_speed_rad_s: f64,
 }
 
-/// Heat generated in one bearing, by mechanism [W].
+/// Heat generated in one bearing, by mechanism \[W\].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BearingHeat {
-    /// omega (M1 + Mv) [W].
+    /// omega (M1 + Mv) \[W\].
     pub rolling_w: f64,
-    /// Sum over inner contacts of |omega_si| Msi [W].
+    /// Sum over inner contacts of |omega_si| Msi \[W\].
     pub inner_spin_w: f64,
-    /// Sum over outer contacts of |omega_so| Mso [W].
+    /// Sum over outer contacts of |omega_so| Mso \[W\].
     pub outer_spin_w: f64,
 }
 
-/// Heat delivered to each part (A-27) [W].
+/// Heat delivered to each part (A-27) \[W\].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HeatSplit {
+    /// Heat into the inner ring: 1/4 of the rolling heat + 1/2 of the inner spin heat \[W\].
     pub inner_ring_w: f64,
+    /// Heat into the balls (all of them): 1/2 of the rolling heat + 1/2 of all spin heat \[W\].
     pub balls_w: f64,
+    /// Heat into the outer ring: 1/4 of the rolling heat + 1/2 of the outer spin heat \[W\].
     pub outer_ring_w: f64,
 }
 
 impl BearingHeat {
-    /// Total heat H (A-23) [W].
+    /// Total heat H (A-23) \[W\].
     pub fn total_w(&self) -> f64 {
         self.rolling_w + self.inner_spin_w + self.outer_spin_w
     }
@@ -263,7 +269,7 @@ impl BearingHeat {
 pub const SPHERE_DRAG_COEFFICIENT: f64 = 0.47;
 
 /// Drag ("churning") power of the balls orbiting through the oil-air
-/// mixture of the bearing cavity [W] (Harris & Kotzalas, ball drag; module
+/// mixture of the bearing cavity \[W\] (Harris & Kotzalas, ball drag; module
 /// docs): per ball `F_D = (pi/32) C_D rho_eff D^2 (dm omega_c)^2` with
 /// `rho_eff = X rho_oil`, power `F_D v` at the ball-centre speed
 /// `v = dm |omega_c| / 2`, times the ball count Z:

@@ -1,6 +1,6 @@
-//! Lubricant properties against temperature (PHYSICS.md section 4: the
-//! viscous moment needs the kinematic viscosity at the operating
-//! temperature; section 5: the oil-air film coefficient needs k, Pr, nu).
+//! Lubricant properties against temperature (docs/concepts/physics.md §4:
+//! the viscous moment needs the kinematic viscosity at the operating
+//! temperature; §5: the oil-air film coefficient needs k, Pr, nu).
 //!
 //! * Kinematic viscosity: ASTM D341 (Walther) chart relation
 //!   `log10(log10(nu + 0.7)) = A - B log10(T_K)`, nu in cSt (mm^2/s), fitted
@@ -21,9 +21,9 @@
 
 use crate::error::{finite, positive, Error, Result};
 
-/// Absolute zero offset [K].
+/// Absolute zero offset \[K\].
 const KELVIN: f64 = 273.15;
-/// Constant of the ASTM D341 relation [cSt].
+/// Constant of the ASTM D341 relation \[cSt\].
 const WALTHER_OFFSET_CST: f64 = 0.7;
 /// Water density at 15 C used for the specific gravity [kg/m^3].
 const WATER_15C_KG_M3: f64 = 999.1;
@@ -31,6 +31,7 @@ const WATER_15C_KG_M3: f64 = 999.1;
 /// A lubricating oil with temperature-dependent properties.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Lubricant {
+    /// Oil name (e.g. "ISO VG 32").
     pub name: String,
     /// Walther constant A of `log10(log10(nu + 0.7)) = A - B log10(T_K)` [-].
     pub walther_a: f64,
@@ -40,9 +41,9 @@ pub struct Lubricant {
     pub density_15c_kg_m3: f64,
     /// Volumetric thermal expansion coefficient of the density law [1/K].
     pub density_expansion_per_k: f64,
-    /// Lowest temperature at which the data apply (pour point) [C].
+    /// Lowest temperature at which the data apply (pour point) \[C\].
     pub min_temperature_c: f64,
-    /// Highest temperature at which the data apply [C].
+    /// Highest temperature at which the data apply \[C\].
     pub max_temperature_c: f64,
 }
 

@@ -1,4 +1,4 @@
-//! Thermal building blocks (PHYSICS.md sections 4 and 5): lubricant
+//! Thermal building blocks (docs/concepts/physics.md §4 and §5): lubricant
 //! properties, bearing friction heat, a general thermal resistance network
 //! with steady and transient solvers, thermal expansion of shaft, rings,
 //! balls and housing, and ready-made networks for the two seed studies.

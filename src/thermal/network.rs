@@ -1,4 +1,4 @@
-//! General lumped thermal network (PHYSICS.md section 5; seed A Fig. 7,
+//! General lumped thermal network (docs/concepts/physics.md §5; seed A Fig. 7,
 //! eq. A-28; seed B transient, Fig. 4).
 //!
 //! Nodes are free (unknown temperature, optional heat capacity m c [J/K])
@@ -48,26 +48,46 @@ pub const SEED_A_NATURAL_W_M2_K125: f64 = 23.0;
 #[derive(Debug, Clone, PartialEq)]
 pub enum Convection {
     /// Constant h.
-    Constant { h_w_m2k: f64 },
+    Constant {
+        /// Film coefficient h [W/(m^2 K)], >= 0.
+        h_w_m2k: f64,
+    },
     /// Natural convection `h = C |T_a - T_b|^0.25`.
-    Natural { coefficient_w_m2_k125: f64 },
+    Natural {
+        /// C [W/(m^2 K^1.25)], >= 0; e.g. [`SEED_A_NATURAL_W_M2_K125`] or
+        /// [`Convection::natural_mcadams`].
+        coefficient_w_m2_k125: f64,
+    },
     /// Forced laminar film (Harris / seed A eq. 31):
     /// `h = c k Pr^(1/3) (u / (nu x))^(1/2)` with the surface speed
     /// `u = velocity_per_speed_m * speed_rad_s` (a radius, m).
     ForcedFilm {
+        /// Leading coefficient c [-], >= 0: [`POHLHAUSEN_LOCAL`] (0.332) or
+        /// Harris' printed [`HARRIS_PRINTED_FILM`] (0.0332).
         coefficient: f64,
+        /// Fluid thermal conductivity k [W/(m K)], > 0.
         fluid_conductivity_w_mk: f64,
+        /// Fluid Prandtl number Pr [-], > 0.
         prandtl: f64,
+        /// Fluid kinematic viscosity nu [m^2/s], > 0.
         kinematic_viscosity_m2_s: f64,
+        /// Characteristic length x along the flow \[m\], > 0.
         length_m: f64,
+        /// Surface speed per unit shaft speed \[m\], >= 0 (u = this *
+        /// |speed_rad_s|): the radius of a surface turning with the shaft, or
+        /// (omega_c / omega) dm / 2 for parts moving at the cage speed.
         velocity_per_speed_m: f64,
     },
     /// Speed-dependent correlation `h = h0 + h1 (omega / omega_ref)^n`
     /// (rotor air gap, shaft ends; seed B Fig. 2 shape).
     SpeedPower {
+        /// h0, the coefficient at standstill [W/(m^2 K)], >= 0.
         h0_w_m2k: f64,
+        /// h1, the speed-dependent part at the reference speed [W/(m^2 K)], >= 0.
         h1_w_m2k: f64,
+        /// omega_ref [rad/s], > 0.
         reference_speed_rad_s: f64,
+        /// Exponent n [-], > 0 (the sign of omega does not matter: |omega| is used).
         exponent: f64,
     },
 }
@@ -122,7 +142,7 @@ impl Convection {
         Ok(())
     }
 
-    /// h at a given |dT| [K] and speed [rad/s], and dh/d|dT|.
+    /// h at a given |dT| \[K\] and speed [rad/s], and dh/d|dT|.
     fn h_and_slope(&self, abs_dt: f64, speed_rad_s: f64) -> (f64, f64) {
         match *self {
             Convection::Constant { h_w_m2k } => (h_w_m2k, 0.0),
@@ -166,36 +186,58 @@ impl Convection {
 #[derive(Debug, Clone, PartialEq)]
 pub enum NodeKind {
     /// Unknown temperature; heat capacity m c [J/K] (0 = massless).
-    Free { heat_capacity_j_per_k: f64 },
-    /// Fixed temperature [C].
-    Boundary { temperature_c: f64 },
+    Free {
+        /// Heat capacity m c [J/K], >= 0; a massless node is algebraic in a transient.
+        heat_capacity_j_per_k: f64,
+    },
+    /// Fixed temperature \[C\].
+    Boundary {
+        /// The fixed temperature \[C\].
+        temperature_c: f64,
+    },
 }
 
 /// A named node.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Node {
+    /// Node name, unique among the network's nodes and links.
     pub name: String,
+    /// Free (with its heat capacity) or boundary (with its temperature).
     pub kind: NodeKind,
 }
 
 /// How a link carries heat.
 #[derive(Debug, Clone, PartialEq)]
 pub enum LinkKind {
-    Conduction { conductance_w_per_k: f64 },
-    Convection { area_m2: f64, law: Convection },
+    /// Conduction, `q_ab = G (T_a - T_b)`.
+    Conduction {
+        /// Constant conductance G [W/K], >= 0 (1 / resistance).
+        conductance_w_per_k: f64,
+    },
+    /// Convection, `q_ab = h(|T_a - T_b|, speed) S (T_a - T_b)`.
+    Convection {
+        /// Wetted area S [m^2], >= 0.
+        area_m2: f64,
+        /// The law giving the film coefficient h.
+        law: Convection,
+    },
 }
 
 /// A named link between nodes `a` and `b`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Link {
+    /// Link name, unique among the network's nodes and links.
     pub name: String,
+    /// First node; a positive flow goes from `a` to `b`.
     pub a: NodeId,
+    /// Second node (different from `a`).
     pub b: NodeId,
+    /// Conduction or convection, with its parameters.
     pub kind: LinkKind,
 }
 
 impl Link {
-    /// Flow a -> b [W] and dq/dT_a (= -dq/dT_b) [W/K].
+    /// Flow a -> b \[W\] and dq/dT_a (= -dq/dT_b) [W/K].
     #[inline]
     fn flow(&self, ta: f64, tb: f64, speed_rad_s: f64) -> (f64, f64) {
         let dt = ta - tb;
@@ -235,13 +277,14 @@ pub struct ThermalNetwork {
 /// Node temperatures of a solution, with their names.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Temperatures {
+    /// Node names, in node order (shared with the solver).
     pub names: Arc<[String]>,
-    /// One temperature per node, in node order [C].
+    /// One temperature per node, in node order \[C\].
     pub temperatures_c: Vec<f64>,
 }
 
 impl Temperatures {
-    /// Temperature of the named node [C].
+    /// Temperature of the named node \[C\].
     pub fn get(&self, name: &str) -> Result<f64> {
         self.names
             .iter()
@@ -252,6 +295,7 @@ impl Temperatures {
 }
 
 impl ThermalNetwork {
+    /// An empty network (no nodes, no links).
     pub fn new() -> Self {
         Self::default()
     }
@@ -278,7 +322,7 @@ impl ThermalNetwork {
         Ok(self.nodes.len() - 1)
     }
 
-    /// Add a fixed-temperature node [C].
+    /// Add a fixed-temperature node \[C\].
     pub fn add_boundary(&mut self, name: &str, temperature_c: f64) -> Result<NodeId> {
         self.check_name(name)?;
         finite(&format!("{name}.temperature_c"), temperature_c)?;
@@ -335,7 +379,7 @@ impl ThermalNetwork {
         Ok(self.links.len() - 1)
     }
 
-    /// Change a boundary temperature [C].
+    /// Change a boundary temperature \[C\].
     pub fn set_boundary_temperature(&mut self, node: NodeId, temperature_c: f64) -> Result<()> {
         finite("temperature_c", temperature_c)?;
         match self.nodes.get_mut(node).map(|n| &mut n.kind) {
@@ -347,9 +391,11 @@ impl ThermalNetwork {
         }
     }
 
+    /// The nodes, indexed by [`NodeId`] (order of addition).
     pub fn nodes(&self) -> &[Node] {
         &self.nodes
     }
+    /// The links, in order of addition (the index the `add_*` methods return).
     pub fn links(&self) -> &[Link] {
         &self.links
     }
@@ -448,7 +494,7 @@ impl ThermalNetwork {
         Ok(())
     }
 
-    /// Net heat into every node r_i = s_i - sum of outflows [W], and
+    /// Net heat into every node r_i = s_i - sum of outflows \[W\], and
     /// optionally the Jacobian dr/dT over all nodes (boundary rows/cols kept;
     /// callers drop them).
     fn residual(&self, t: &[f64], sources_w: &[f64], speed_rad_s: f64, r: &mut [f64], jac: Option<&mut DMatrix<f64>>) {
@@ -476,7 +522,7 @@ impl ThermalNetwork {
         }
     }
 
-    /// Heat leaving the network through each boundary node [W] (positive =
+    /// Heat leaving the network through each boundary node \[W\] (positive =
     /// out of the network into the boundary), by node.
     pub fn boundary_flows_w(&self, temperatures_c: &[f64], speed_rad_s: f64) -> Vec<(String, f64)> {
         let zero = vec![0.0; self.nodes.len()];
@@ -490,7 +536,7 @@ impl ThermalNetwork {
             .collect()
     }
 
-    /// Heat flow through a named link from its node a to node b [W].
+    /// Heat flow through a named link from its node a to node b \[W\].
     pub fn link_flow_w(&self, link: &str, temperatures_c: &[f64], speed_rad_s: f64) -> Result<f64> {
         let l = self
             .links
@@ -506,7 +552,7 @@ impl ThermalNetwork {
             .collect()
     }
 
-    /// Time constants of the network linearised at `temperatures_c` [s],
+    /// Time constants of the network linearised at `temperatures_c` \[s\],
     /// largest first: tau = 1 / lambda for the generalised eigenvalues of
     /// `-J v = lambda C v` over the nodes with heat capacity (massless nodes
     /// eliminated by a Schur complement). Uses the symmetric part of J
@@ -549,7 +595,7 @@ impl ThermalNetwork {
 pub struct NewtonOptions {
     /// Largest number of Newton iterations.
     pub max_iterations: usize,
-    /// Converged when max |r_i| <= relative_tolerance * heat scale [W], the
+    /// Converged when max |r_i| <= relative_tolerance * heat scale \[W\], the
     /// scale being the larger of the total |sources| and the largest link
     /// flow (and at least 1e-9 W).
     pub relative_tolerance: f64,
@@ -698,6 +744,7 @@ fn newton(
 pub struct SteadySolver {
     network: ThermalNetwork,
     names: Arc<[String]>,
+    /// Newton settings (default: 60 iterations, relative tolerance 1e-12).
     pub options: NewtonOptions,
     work: Work,
     last: Option<Vec<f64>>,
@@ -706,6 +753,8 @@ pub struct SteadySolver {
 }
 
 impl SteadySolver {
+    /// A solver for `network` with default [`NewtonOptions`] and no warm
+    /// start (the first solve starts from a linearised network).
     pub fn new(network: ThermalNetwork) -> Self {
         let work = Work::new(&network);
         SteadySolver {
@@ -718,6 +767,7 @@ impl SteadySolver {
         }
     }
 
+    /// The network being solved.
     pub fn network(&self) -> &ThermalNetwork {
         &self.network
     }
@@ -869,10 +919,11 @@ impl SteadySolver {
 /// A recorded transient.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Transient {
+    /// Node names, in node order.
     pub names: Arc<[String]>,
-    /// Times of the records [s].
+    /// Times of the records \[s\].
     pub times_s: Vec<f64>,
-    /// Temperatures at each record, one vector per time [C].
+    /// Temperatures at each record, one vector per time \[C\].
     pub temperatures_c: Vec<Vec<f64>>,
 }
 
@@ -880,6 +931,8 @@ pub struct Transient {
 #[derive(Debug, Clone)]
 pub struct TransientSolver {
     network: ThermalNetwork,
+    /// Newton settings of each implicit stage (default: 30 iterations,
+    /// relative tolerance 1e-10).
     pub options: NewtonOptions,
     work: Work,
     capacity: Vec<f64>,
@@ -893,6 +946,7 @@ pub struct TransientSolver {
 const GAMMA: f64 = 2.0 - std::f64::consts::SQRT_2;
 
 impl TransientSolver {
+    /// A TR-BDF2 integrator for `network` (heat capacities read once here).
     pub fn new(network: ThermalNetwork) -> Self {
         let work = Work::new(&network);
         let n = network.nodes.len();
@@ -911,6 +965,7 @@ impl TransientSolver {
         }
     }
 
+    /// The network being integrated.
     pub fn network(&self) -> &ThermalNetwork {
         &self.network
     }

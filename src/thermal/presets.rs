@@ -83,7 +83,11 @@ pub enum BallConduction {
     /// same area as the contact ellipse, radius c = sqrt(a b), on two
     /// half-spaces, R = 1/(4 k_ball c) + 1/(4 k_ring c) (Carslaw & Jaeger;
     /// Yovanovich's area-equivalent circle for ellipses), Z in parallel.
-    HertzConstriction { contact_load_n: f64 },
+    HertzConstriction {
+        /// Normal contact load Q of one ball on the raceway \[N\], > 0; the
+        /// contact ellipse is taken at the free contact angle.
+        contact_load_n: f64,
+    },
 }
 
 /// Ball-to-raceway resistance of all Z balls of one bearing [K/W].
@@ -111,13 +115,25 @@ pub fn ball_raceway_resistance_k_per_w(bearing: &Bearing, inner: bool, model: Ba
 /// Parameters of the seed A network (defaults: see module docs).
 #[derive(Debug, Clone, PartialEq)]
 pub struct SeedAParams {
+    /// Shaft diameter D_s at the seat \[m\]; default the bearing bore.
     pub shaft_diameter_m: f64,
+    /// Housing outside diameter D_h \[m\]; default 1.5 x the bearing OD.
     pub housing_diameter_m: f64,
+    /// Axial conduction length L_s from the seat to the shaft node \[m\];
+    /// default 0.030. Also the shaft's axial-growth length of the mounting.
     pub shaft_length_m: f64,
+    /// Housing boss length L_h \[m\] (convecting cylinder, and the housing's
+    /// axial-growth length of the mounting); default 0.040.
     pub housing_length_m: f64,
+    /// Housing material; default cast aluminium.
     pub housing: Material,
+    /// Lubricant of the oil-air films and of the viscous moment; default the
+    /// e-drive ATF preset.
     pub lubricant: Lubricant,
+    /// Oil-air supply temperature, boundary node Tog \[C\]; default 28 (seed A).
     pub oil_air_temperature_c: f64,
+    /// Ambient air temperature, boundary node Ta \[C\]; default 26 (seed A).
+    /// Also the assembly temperature unless the coupled options give one.
     pub ambient_temperature_c: f64,
     /// Natural convection constant C of h = C dT^0.25 [W/(m^2 K^1.25)].
     pub natural_coefficient_w_m2_k125: f64,
@@ -143,21 +159,31 @@ impl SeedAParams {
 /// The seed A network and its node ids.
 #[derive(Debug, Clone)]
 pub struct BearingNetwork {
+    /// The network: 7 free massless nodes, 2 boundaries (steady state only).
     pub network: ThermalNetwork,
+    /// Ts, the shaft.
     pub shaft: NodeId,
+    /// Tci, the inner ring / shaft contact (inner ring bore).
     pub inner_contact: NodeId,
+    /// Ti, the inner raceway; receives the inner-ring heat.
     pub inner: NodeId,
+    /// Tb, all balls lumped; receives the ball heat.
     pub balls: NodeId,
+    /// To, the outer raceway; receives the outer-ring heat.
     pub outer: NodeId,
+    /// Tco, the outer ring / housing contact (outer ring OD).
     pub outer_contact: NodeId,
+    /// Th, the housing.
     pub housing: NodeId,
+    /// Tog, the oil-air supply (boundary).
     pub oil_air: NodeId,
+    /// Ta, the ambient air (boundary).
     pub ambient: NodeId,
 }
 
 impl BearingNetwork {
     /// Source vector for a Burton-Staph split: inner-ring heat at Ti,
-    /// ball heat at Tb, outer-ring heat at To [W]. (Eq. A-28 as extracted
+    /// ball heat at Tb, outer-ring heat at To \[W\]. (Eq. A-28 as extracted
     /// shows 0.5 factors in front of H_i, H_o; with A-27 already splitting
     /// the heat, we put each part's share on its node once.)
     pub fn sources_w(&self, split: &HeatSplit) -> Vec<f64> {
@@ -258,52 +284,66 @@ pub fn seed_a_network(bearing: &Bearing, p: &SeedAParams) -> Result<BearingNetwo
 /// [`SpindleParams::seed_b`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct SpindleParams {
+    /// Bearing of the front (nose-side) pair; default 7009C-ceramic.
     pub front_bearing: Bearing,
+    /// Bearing of the rear pair; default 7008C-ceramic.
     pub rear_bearing: Bearing,
-    /// Shaft length from the front bearing pair centre to the rotor centre,
-    /// and from the rotor centre to the rear pair centre [m].
+    /// Shaft length from the front bearing pair centre to the rotor centre \[m\].
     pub front_span_m: f64,
+    /// Shaft length from the rotor centre to the rear pair centre \[m\].
     pub rear_span_m: f64,
-    /// Shaft nose length in front of the front pair [m].
+    /// Shaft nose length in front of the front pair \[m\].
     pub nose_length_m: f64,
-    /// Rotor (laminations + cage) outside diameter and length [m].
+    /// Rotor (laminations + cage) outside diameter \[m\].
     pub rotor_diameter_m: f64,
+    /// Rotor length, also the stator core length \[m\].
     pub rotor_length_m: f64,
-    /// Radial air gap rotor-stator [m] (seed B: 0.3 mm).
+    /// Radial air gap rotor-stator \[m\] (seed B: 0.3 mm).
     pub air_gap_m: f64,
-    /// Stator outside diameter [m].
+    /// Stator outside diameter \[m\].
     pub stator_outer_diameter_m: f64,
-    /// Sleeve (housing) outside diameter [m].
+    /// Sleeve (housing) outside diameter \[m\].
     pub sleeve_outer_diameter_m: f64,
-    /// Bearing-seat housing lengths, front and rear [m].
+    /// Front bearing-seat housing length \[m\].
     pub front_housing_length_m: f64,
+    /// Rear bearing-seat housing length \[m\].
     pub rear_housing_length_m: f64,
-    /// Water jacket: flow [L/min], rectangular channel width x height [m],
-    /// wetted fraction of the stator-sleeve interface.
+    /// Water jacket flow [L/min].
     pub water_flow_l_min: f64,
+    /// Width w of the rectangular water-jacket channel \[m\].
     pub channel_width_m: f64,
+    /// Height h of the rectangular water-jacket channel \[m\].
     pub channel_height_m: f64,
+    /// Wetted fraction of the stator-sleeve interface area (0..1) [-].
     pub jacket_wetted_fraction: f64,
     /// Thermal contact conductance stator / sleeve (shrink fit) [W/(m^2 K)].
     pub stator_contact_w_m2k: f64,
+    /// Cooling-water temperature, a boundary node \[C\] (seed B: 18).
     pub water_temperature_c: f64,
+    /// Ambient air temperature, a boundary node \[C\] (seed B: 25).
     pub ambient_temperature_c: f64,
-    /// Oil-air supply temperature [C] (compressed air at ambient).
+    /// Oil-air supply temperature \[C\] (compressed air at ambient).
     pub oil_air_temperature_c: f64,
+    /// Lubricant of the oil-air films and of the viscous moment; default ISO VG 32.
     pub lubricant: Lubricant,
     /// Palmgren lubrication factor f0 (oil-air: 1-2; we take 1.0).
     pub lubrication_factor_f0: f64,
-    /// Axial preload per bearing [N].
+    /// Axial preload per bearing \[N\].
     pub preload_n: f64,
     /// Ball-raceway conduction model (default: Hertz constriction at the
     /// preload contact load Q = Fa / (Z sin alpha0)).
     pub ball_conduction: BallConduction,
-    /// Motor losses at `loss_reference_rpm` [W]: stator copper, stator
-    /// iron, rotor copper, rotor mechanical (windage).
+    /// Stator copper loss \[W\], put on the stator node; constant with speed.
     pub stator_copper_w: f64,
+    /// Stator iron loss at `loss_reference_rpm` \[W\]; scales with (n/n_ref)^1.5.
     pub stator_iron_w: f64,
+    /// Rotor copper loss \[W\], put on the rotor node; constant with speed.
     pub rotor_copper_w: f64,
+    /// Rotor mechanical (windage) loss at `loss_reference_rpm` \[W\]; scales
+    /// with (n/n_ref)^2.
     pub rotor_mechanical_w: f64,
+    /// Speed n_ref at which the iron and windage losses are given, also the
+    /// speed of the air-gap coefficient h1 \[rpm\].
     pub loss_reference_rpm: f64,
 }
 
@@ -400,23 +440,41 @@ fn air_gap_nusselt(speed_rad_s: f64, mean_radius_m: f64, gap_m: f64) -> f64 {
 /// The spindle network, its node ids and its heat model.
 #[derive(Debug, Clone)]
 pub struct SpindleNetwork {
+    /// The network: 13 free nodes with heat capacity m c, 3 boundaries.
     pub network: ThermalNetwork,
+    /// The parameters it was built from (also used by the heat model).
     pub params: SpindleParams,
+    /// Front shaft section (front journal and nose).
     pub shaft_front: NodeId,
+    /// Rotor (laminations + cage and the shaft core under it); rotor losses.
     pub rotor: NodeId,
+    /// Rear shaft section (rear journal).
     pub shaft_rear: NodeId,
+    /// Stator core; stator losses.
     pub stator: NodeId,
+    /// Inner rings of the front pair (both bearings lumped).
     pub front_inner: NodeId,
+    /// Balls of the front pair (both bearings lumped).
     pub front_balls: NodeId,
+    /// Outer rings of the front pair (both bearings lumped).
     pub front_outer: NodeId,
+    /// Inner rings of the rear pair (both bearings lumped).
     pub rear_inner: NodeId,
+    /// Balls of the rear pair (both bearings lumped).
     pub rear_balls: NodeId,
+    /// Outer rings of the rear pair (both bearings lumped).
     pub rear_outer: NodeId,
+    /// Front bearing-seat housing.
     pub housing_front: NodeId,
+    /// Steel sleeve around the stator, cooled by the water jacket.
     pub sleeve: NodeId,
+    /// Rear bearing-seat housing.
     pub housing_rear: NodeId,
+    /// Cooling water (boundary).
     pub water: NodeId,
+    /// Ambient air (boundary).
     pub ambient: NodeId,
+    /// Oil-air supply (boundary).
     pub oil_air: NodeId,
 }
 
