@@ -260,7 +260,6 @@ fn pair_heat_model(b: &Bearing) -> Result<PairHeatModel> {
 impl Spindle {
     /// Build the pairs and the network.
     pub fn new(config: SpindleConfig) -> Result<Self> {
-        positive("spin_friction", config.spin_friction.max(f64::MIN_POSITIVE))?;
         non_negative("spin_friction", config.spin_friction)?;
         finite("radial_load_n", config.radial_load_n)?;
         finite("assembly_temperature_c", config.assembly_temperature_c)?;

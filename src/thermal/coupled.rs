@@ -621,12 +621,22 @@ impl CoupledBearing {
             history = Some((t, f));
             t = next;
         }
-        Err(Error::convergence(
-            "coupled thermo-mechanical fixed point",
-            self.options.max_iterations,
-            change_k.max(change_m / 1e-6),
-            self.options.tolerance_k,
-        ))
+        // Report the criterion that failed, each in its own measure.
+        Err(if change_k > self.options.tolerance_k {
+            Error::convergence(
+                "coupled thermo-mechanical fixed point (largest node temperature change, K)",
+                self.options.max_iterations,
+                change_k,
+                self.options.tolerance_k,
+            )
+        } else {
+            Error::convergence(
+                "coupled thermo-mechanical fixed point (raceway offset change, m)",
+                self.options.max_iterations,
+                change_m,
+                self.options.tolerance_m,
+            )
+        })
     }
 }
 

@@ -990,6 +990,15 @@ impl TransientSolver {
                 format!("need one temperature per node ({n} nodes)"),
             ));
         }
+        for (k, s) in sources_w.iter().enumerate() {
+            if s.len() != n {
+                return Err(Error::config(
+                    "sources_w",
+                    s.len(),
+                    format!("stage {k}: need one heat source per node ({n} nodes)"),
+                ));
+            }
+        }
         for (i, node) in net.nodes.iter().enumerate() {
             if let NodeKind::Boundary { temperature_c } = node.kind {
                 temperatures_c[i] = temperature_c;
@@ -1141,6 +1150,19 @@ mod tests {
         n.add_resistance("bc", b, c, r[1]).unwrap();
         n.add_resistance("ca", c, amb, r[2]).unwrap();
         (n, vec![p, 0.0, 0.0, 0.0])
+    }
+
+    #[test]
+    fn transient_step_rejects_sources_of_the_wrong_length() {
+        // A source vector that does not match the nodes is a named error,
+        // not a panic inside the step.
+        let (n, s) = chain(50.0, [0.1, 0.2, 0.3], 20.0);
+        let mut solver = TransientSolver::new(n);
+        let mut t = vec![20.0; s.len()];
+        let short = &s[..2];
+        let err = solver.step(&mut t, 1.0, 0.0, [&s, short, &s]).unwrap_err();
+        assert!(err.to_string().contains("sources_w"), "{err}");
+        assert!(solver.step(&mut t, 1.0, 0.0, [&s, &s, &s]).is_ok());
     }
 
     #[test]
