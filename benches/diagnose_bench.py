@@ -46,7 +46,7 @@ def main() -> None:
     )
     truth = D.BearingModelSpec(b, effects=base_eff, churning_oil_fraction=0.01)
     table = tb.candidates(D.BearingModelSpec(b, effects=base_eff), qs)
-    names = table.filter(pl.col("affects") != D._NOT_IN_BEARING)["name"].to_list()[:10]
+    names = table.filter(pl.col("affects") != D.NOT_IN_BEARING)["name"].to_list()[:10]
     spec = D.BearingModelSpec(b, effects=base_eff)
     for label in ("cold", "warm"):
         # half the typical noise; the warm run gets new noise on the same conditions
@@ -63,7 +63,7 @@ def main() -> None:
 def spindle() -> None:
     """The seed B spindle: 7 speeds x 2 preloads x 9 quantities (126 points,
     vibration included), the model without thermal displacement."""
-    from thermobear.diagnosis_spindle import SPINDLE_QUANTITIES
+    from thermobear.diagnosis import SPINDLE_QUANTITIES
 
     sp = tb.Spindle.preset("seed-ceramic-spindle")
     full = tb.SpindleModelSpec(sp)

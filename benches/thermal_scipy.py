@@ -71,7 +71,7 @@ def main() -> None:
     assert list(ours["node"]) == names
     err = float(np.max(np.abs(t_ref - t_tb)))
     print("node  scipy_c  thermobear_c")
-    for n, a, c in zip(names, t_ref, t_tb):
+    for n, a, c in zip(names, t_ref, t_tb, strict=False):
         print(f"{n:4s} {a:8.3f} {c:12.3f}")
     print(f"max |difference| = {err:.2e} K")
     assert err < 1e-6, err

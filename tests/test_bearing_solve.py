@@ -115,7 +115,7 @@ def test_progress_is_reported(b6208):
         progress=lambda done, total: calls.append((done, total)),
     )
     assert calls and calls[-1] == (40, 40)
-    assert all(a <= b for (a, _), (b, _) in zip(calls, calls[1:]))
+    assert all(a <= b for (a, _), (b, _) in zip(calls, calls[1:], strict=False))
 
 
 _SCRIPT = """

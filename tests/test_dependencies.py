@@ -51,15 +51,14 @@ def imported_top_level_modules(package: Path) -> dict[str, list[str]]:
 
 def third_party(modules: dict[str, list[str]]) -> dict[str, list[str]]:
     local = {"thermobear"}
-    return {
-        m: w for m, w in modules.items() if m not in sys.stdlib_module_names and m not in local
-    }
+    return {m: w for m, w in modules.items() if m not in sys.stdlib_module_names and m not in local}
 
 
 def test_the_ast_walk_sees_lazy_imports(tmp_path):
     # A function-level import counts as much as a module-level one.
     (tmp_path / "m.py").write_text(
-        "import os\nfrom . import x\n\ndef f():\n    from scipy.stats import chi2\n    import yaml\n"
+        "import os\nfrom . import x\n\n"
+        "def f():\n    from scipy.stats import chi2\n    import yaml\n"
     )
     mods = third_party(imported_top_level_modules(tmp_path))
     assert set(mods) == {"scipy", "yaml"}

@@ -56,7 +56,9 @@ def _measured(truth: D.BearingModelSpec, seed: int, extra=None) -> pl.DataFrame:
     allq = truth.predict(cond)
     q = cond["quantity"].to_list()
     val = np.array([allq[qq][i] for i, qq in enumerate(q)])
-    sig = np.array([SIGMA_K if qq.startswith("temp") else SIGMA_REL * v for qq, v in zip(q, val)])
+    sig = np.array(
+        [SIGMA_K if qq.startswith("temp") else SIGMA_REL * v for qq, v in zip(q, val, strict=False)]
+    )
     if extra is not None:
         val = val + extra(cond, sig)
     rng = np.random.default_rng(seed)

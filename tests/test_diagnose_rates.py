@@ -47,7 +47,9 @@ SEEDS = range(30)
 
 def _bearing_effects() -> list[str]:
     eff = tb.effects("switch")
-    return [n for n, m in zip(eff["name"], eff["models"]) if "bearing" in m.split(",")]
+    return [
+        n for n, m in zip(eff["name"], eff["models"], strict=False) if "bearing" in m.split(",")
+    ]
 
 
 FULL = _bearing_effects()

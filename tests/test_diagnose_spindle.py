@@ -10,9 +10,9 @@ import pytest
 
 import thermobear as tb
 from thermobear import diagnosis
-from thermobear.diagnosis_spindle import SPINDLE_QUANTITIES, THERMAL_DISPLACEMENT_EFFECTS
+from thermobear.diagnosis import SPINDLE_QUANTITIES, THERMAL_DISPLACEMENT_EFFECTS
 from thermobear.errors import ConfigError, DataError
-from thermobear.studies_diagnose_seed_b import (
+from thermobear.studies.diagnose_seed_b import (
     baseline_without_thermal_displacement,
     study_diagnose_seed_b,
 )
@@ -55,7 +55,9 @@ def _values(spec, cond):
 def _sigma(cond, v):
     # thermocouples 0.5 K, vibrometer 5 %, axial growth probe 0.5 um
     q = cond["quantity"].to_list()
-    return np.array([0.05 * x if qq == "velocity_rms_mm_s" else 0.5 for qq, x in zip(q, v)])
+    return np.array(
+        [0.05 * x if qq == "velocity_rms_mm_s" else 0.5 for qq, x in zip(q, v, strict=False)]
+    )
 
 
 def _measured(cond, v, sig, seed):

@@ -6,7 +6,7 @@ Synthetic measurements: the full spindle model (every effect on, magnetic
 pull included) with one effect switched off in the baseline, Gaussian noise
 at multiples of each quantity's typical uncertainty (thermocouples 0.5 K,
 vibrometer 5 %, axial growth probe 0.5 um, preload load washer 2 %; see
-thermobear.diagnosis_spindle.SPINDLE_QUANTITIES). The design is a spindle
+thermobear.diagnosis.SPINDLE_QUANTITIES). The design is a spindle
 test rig's: front/rear outer and inner ring and housing temperatures, axial
 growth, front operating preload and shaft-end vibration at 7 speeds
 (6,000-18,000 rpm) and two spring preloads (250 and 400 N), 126 points.
@@ -23,8 +23,7 @@ import polars as pl
 import pytest
 
 import thermobear as tb
-from thermobear.diagnosis import synthetic_measurements
-from thermobear.diagnosis_spindle import SPINDLE_QUANTITIES, SpindleModelSpec
+from thermobear.diagnosis import SPINDLE_QUANTITIES, SpindleModelSpec, synthetic_measurements
 
 SPEEDS_RPM = np.arange(6000.0, 18001.0, 2000.0)
 PRELOADS_N = (250.0, 400.0)
@@ -103,7 +102,7 @@ LOOKALIKE = {
 
 
 def test_every_spindle_effect_is_covered():
-    models = dict(zip(tb.effects("switch")["name"], tb.effects("switch")["models"]))
+    models = dict(zip(tb.effects("switch")["name"], tb.effects("switch")["models"], strict=False))
     acting = {n for n, m in models.items() if {"spindle", "rotor"} & set(m.split(","))}
     assert acting == set(SEPARABLE) | set(LOOKALIKE)
     assert acting <= set(FULL)

@@ -152,7 +152,7 @@ def test_typo_errors_name_the_likely_value(pair: tb.GearPair) -> None:
     assert ok.transverse_contact_ratio == pytest.approx(pair.transverse_contact_ratio, rel=1e-12)
     # The preset reports the printed table's two typos.
     w = pair.typo_warnings
-    got = dict(zip(w["field"].to_list(), w["likely_intended"].to_list()))
+    got = dict(zip(w["field"].to_list(), w["likely_intended"].to_list(), strict=False))
     assert got["youngs_modulus_mpa"] == pytest.approx(206_000.0)
     assert got["density_t_per_mm3"] == pytest.approx(7.8e-9)
 
@@ -311,7 +311,7 @@ def test_regime_map_and_set_columns(seed_system: tb.GearSystem, pair: tb.GearPai
 
 
 def test_quick_demo_study_writes_its_tables(tmp_path) -> None:
-    from thermobear.demo import STUDIES, study_function
+    from thermobear.studies.demo import STUDIES, study_function
 
     fn = study_function(dict(STUDIES)["seed_a_gear"])
     files = fn(tmp_path, True)

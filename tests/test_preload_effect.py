@@ -55,7 +55,7 @@ def test_rigid_preload_ignores_the_effect():
 def test_registry_lists_models():
     df = tb.effects("switch")
     assert {"name", "description", "models"} <= set(df.columns)
-    models = dict(zip(df["name"], df["models"]))
+    models = dict(zip(df["name"], df["models"], strict=False))
     assert models[EFFECT] == "spindle"
     assert models["unbalanced_magnetic_pull"] == "spindle,rotor"
     assert "rotor" in models["centrifugal_force"].split(",")

@@ -84,7 +84,7 @@ def test_compensation_preload_is_rate_times_growth(ceramic: tb.Spindle) -> None:
         ceramic, speeds_rpm=[12_000.0, 18_000.0], spring_rate_n_per_um=0.36
     )
     assert list(df["speed_rpm"]) == [12_000.0, 18_000.0]
-    for u, f in zip(df["axial_growth_um"], df["compensation_preload_n"]):
+    for u, f in zip(df["axial_growth_um"], df["compensation_preload_n"], strict=False):
         assert f == pytest.approx(0.36 * u, rel=1e-12)
     # Hotter at higher speed: more growth, more compensation.
     assert df["axial_growth_um"][1] > df["axial_growth_um"][0] > 0.0

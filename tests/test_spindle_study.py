@@ -9,7 +9,7 @@ from pathlib import Path
 import polars as pl
 import pytest
 
-from thermobear.demo import STUDIES, study_function
+from thermobear.studies.demo import STUDIES, study_function
 
 
 def test_seed_b_spindle_study_quick(tmp_path: Path) -> None:

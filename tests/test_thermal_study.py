@@ -2,8 +2,8 @@
 
 import polars as pl
 
-from thermobear.demo import STUDIES, study_function
-from thermobear.studies_seed_a import study_seed_a_thermal
+from thermobear.studies.demo import STUDIES, study_function
+from thermobear.studies.seed_a_thermal import study_seed_a_thermal
 
 
 def test_seed_a_thermal_study(tmp_path):

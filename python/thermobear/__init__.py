@@ -5,19 +5,30 @@ Rust core (``thermobear._native``) with a Python front that returns polars
 DataFrames and draws matplotlib figures. Units are in every name:
 ``speed_rpm``, ``axial_n``, ``ball_diameter_mm``, ``stiffness_n_per_m``.
 Results are SI unless the name says otherwise.
+
+The package, bottom layer first (a module imports only from its own layer
+or below; ``tests/test_layout.py`` checks it):
+
+* ``errors``, ``config`` -- exceptions and system descriptions (TOML);
+* ``bearing`` -- materials, the bearing solve; ``thermal`` -- heat, the
+  thermal network, stiffness against speed; ``gear``, ``spindle``,
+  ``rotor`` -- the machines;
+* ``diagnosis`` -- model against measurements, step by step;
+* ``plot`` -- figures, one module per topic;
+* ``studies`` (the seed studies, ``thermobear demo``) and ``cli`` on top.
 """
 
-from __future__ import annotations
-
-from typing import Optional
-
-from . import _native
-from .bearing import Bearing, BearingSolution, Material, stiffness_curve
+from . import _native, bearing, config, diagnosis, errors, gear, plot, rotor, spindle, thermal
+from .bearing import Bearing, BearingSolution, Material
 from .config import load_config, seed_config, seed_config_names
-from .diagnosis import BearingModelSpec, Diagnosis, candidates, diagnose, load_measurements
-from .diagnosis_spindle import (
+from .diagnosis import (
+    BearingModelSpec,
+    Diagnosis,
     SpindleModelSpec,
+    candidates,
+    diagnose,
     diagnose_spindle,
+    load_measurements,
     load_spindle_measurements,
     seed_b_measurements,
     spindle_candidates,
@@ -47,67 +58,79 @@ from .spindle import (
     spindle_grid,
     transient,
 )
-from .thermal import ThermalState, thermal_state
+from .thermal import ThermalState, stiffness_curve, thermal_state
 
 __version__: str = _native.__version__
 
 
-def effects(kind: Optional[str] = None) -> "polars.DataFrame":  # noqa: F821
+def effects(kind: str | None = None) -> "polars.DataFrame":  # noqa: F821
     """The effects registry: every physical effect a model can include or
     leave out, one row each (see :func:`thermobear.diagnosis.effect_registry`
     for the columns). ``kind="switch"``: the named effects for
     ``effects=[...]``; ``kind="term"``: the terms with a calibratable input
     whose null value leaves them out (extra heat, housing conductance ...)."""
-    from .diagnosis import effect_registry
+    return diagnosis.effect_registry(kind)
 
-    return effect_registry(kind)
-
-
-from . import plot  # noqa: E402  (plot imports matplotlib lazily)
 
 __all__ = [
+    # subpackages and modules, bottom layer first
+    "errors",
+    "config",
+    "bearing",
+    "thermal",
+    "gear",
+    "spindle",
+    "rotor",
+    "diagnosis",
+    "plot",
+    # errors
+    "ConfigError",
+    "ConvergenceError",
+    "DataError",
+    "ThermalRunawayError",
+    "ThermobearError",
+    # system descriptions
+    "load_config",
+    "seed_config",
+    "seed_config_names",
+    # bearing and thermal state
+    "Bearing",
+    "BearingSolution",
+    "Material",
+    "ThermalState",
+    "stiffness_curve",
+    "thermal_state",
+    # gear dynamics
+    "GearPair",
+    "GearSystem",
+    "bifurcation",
+    "bifurcation_set",
+    "gear_defaults",
+    "largest_lyapunov",
+    "regime_map",
+    "regimes",
+    # spindle
+    "Spindle",
+    "compensation_preload",
+    "optimal_preload",
+    "spindle_grid",
+    "transient",
+    # rotor
     "campbell",
     "critical_speeds",
     "spectrum",
     "spectrum_orders",
     "vibration",
-    "Bearing",
+    # diagnosis
+    "effects",
     "BearingModelSpec",
-    "BearingSolution",
     "Diagnosis",
+    "SpindleModelSpec",
     "candidates",
     "diagnose",
-    "load_measurements",
-    "SpindleModelSpec",
     "diagnose_spindle",
+    "load_measurements",
     "load_spindle_measurements",
     "seed_b_measurements",
     "spindle_candidates",
-    "ConfigError",
-    "ConvergenceError",
-    "DataError",
-    "GearPair",
-    "GearSystem",
-    "Material",
-    "ThermalRunawayError",
-    "ThermalState",
-    "ThermobearError",
-    "bifurcation",
-    "bifurcation_set",
-    "effects",
-    "gear_defaults",
-    "largest_lyapunov",
-    "load_config",
-    "plot",
-    "regime_map",
-    "regimes",
-    "seed_config",
-    "seed_config_names",
-    "stiffness_curve",
-    "Spindle",
-    "compensation_preload",
-    "optimal_preload",
-    "spindle_grid",
-    "thermal_state",
-    "transient",
 ]

@@ -4,9 +4,11 @@ the package (``thermobear/configs/``)."""
 
 from __future__ import annotations
 
+import tomllib
 from importlib import resources
 from pathlib import Path
-from typing import Union
+
+import numpy as np
 
 from . import _native
 
@@ -31,7 +33,7 @@ def seed_config(name: str) -> str:
     return resources.files(_CONFIG_PACKAGE).joinpath(name + ".toml").read_text()
 
 
-def load_config(path_or_text: Union[str, Path]) -> str:
+def load_config(path_or_text: str | Path) -> str:
     """Read a system description from a path (or take TOML text as is),
     check it on the Rust side and return the text."""
     text = str(path_or_text)
@@ -45,3 +47,21 @@ def load_config(path_or_text: Union[str, Path]) -> str:
             raise ConfigError(f"invalid path = {p}: cannot read: {e}") from None
     _native.check_config(text)
     return text
+
+
+def read_toml(text: str) -> dict:
+    """The parsed TOML of a system description's text."""
+    return tomllib.loads(text)
+
+
+def sweep_speeds(cfg: dict, quick: bool = False) -> np.ndarray:
+    """The speeds [rpm] of a parsed system description's ``[sweep]``:
+    ``speeds_rpm``, or ``speed_count`` (default 51; at most 11 when
+    ``quick``) from ``speed_start_rpm`` to ``speed_stop_rpm``."""
+    sw = cfg.get("sweep", {})
+    if "speeds_rpm" in sw:
+        return np.asarray(sw["speeds_rpm"], dtype=float)
+    n = int(sw.get("speed_count", 51))
+    if quick:
+        n = min(n, 11)
+    return np.linspace(float(sw["speed_start_rpm"]), float(sw["speed_stop_rpm"]), n)

@@ -1,0 +1,11 @@
+"""Ball bearings: materials, geometry, the static and high-speed
+quasi-static solve and the bearing stiffness matrix (crate: ``src/bearing``,
+bindings ``src/python/bearing.rs``).
+
+Stiffness against speed is :func:`thermobear.thermal.stiffness_curve`
+(its thermal mode needs the thermal network, one layer up)."""
+
+from .ball_bearing import Bearing, BearingSolution
+from .material import Material
+
+__all__ = ["Bearing", "BearingSolution", "Material"]

@@ -1,0 +1,65 @@
+"""Model-vs-measurement discrepancy workflow (issue 6): find where a model
+misses measured data, name the missing effect the data support, show the
+gap shrink -- and refuse to name one the data cannot support.
+
+:func:`diagnose` runs the steps, one module each:
+
+* :mod:`.measurements` -- read and check the measured table, hold out points;
+* :mod:`.registry`, :mod:`.candidates` -- the effects registry and the
+  candidates (missing effects, miscalibrated inputs, sensor-offset decoys);
+* :mod:`.audit` -- the baseline's residual per quantity and speed band, and
+  the held-out gap before/after;
+* :mod:`.identifiability` -- fingerprints, look-alike pairs, the extra
+  measurement that separates them;
+* :mod:`.screening` -- each candidate calibrated alone and scored (BIC,
+  held-out chi^2, 95 % interval);
+* :mod:`.acceptance` -- the best candidate, ties, the joint refit;
+* :mod:`.verdict` -- the verdict in words; :mod:`.result` -- :class:`Diagnosis`;
+* :mod:`.workflow` -- :func:`diagnose`, the sequence of the steps.
+
+The machines behind the protocol of :mod:`.protocol`: one bearing
+(:mod:`.bearing_spec`) and the seed B spindle (:mod:`.spindle_spec`).
+"""
+
+from .bearing_spec import BearingModelSpec, model_from_toml
+from .candidates import Candidate, candidates, sensor_offset_candidates
+from .measurements import QUANTITIES, load_measurements, synthetic_measurements, typical_sigma
+from .protocol import ModelSpec
+from .registry import NOT_IN_BEARING, effect_registry
+from .result import Diagnosis
+from .spindle_spec import (
+    SPINDLE_QUANTITIES,
+    THERMAL_DISPLACEMENT_EFFECTS,
+    SpindleModelSpec,
+    diagnose_spindle,
+    load_spindle_measurements,
+    seed_b_measurements,
+    spindle_candidates,
+)
+from .statistics import residual_shape
+from .workflow import diagnose
+
+__all__ = [
+    "QUANTITIES",
+    "SPINDLE_QUANTITIES",
+    "THERMAL_DISPLACEMENT_EFFECTS",
+    "BearingModelSpec",
+    "Candidate",
+    "Diagnosis",
+    "ModelSpec",
+    "NOT_IN_BEARING",
+    "SpindleModelSpec",
+    "candidates",
+    "diagnose",
+    "diagnose_spindle",
+    "effect_registry",
+    "load_measurements",
+    "load_spindle_measurements",
+    "model_from_toml",
+    "residual_shape",
+    "seed_b_measurements",
+    "sensor_offset_candidates",
+    "spindle_candidates",
+    "synthetic_measurements",
+    "typical_sigma",
+]

@@ -1,0 +1,98 @@
+"""Step 4 of :func:`thermobear.diagnose`: acceptance -- the best passing
+candidate, a tie set of rivals, the accepted record, and the joint refit
+of every accepted parameter."""
+
+from __future__ import annotations
+
+from typing import Optional
+
+import numpy as np
+
+from ..errors import ThermobearError
+from .candidates import Candidate
+from .setting import _predict, _Setting
+
+
+def joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_options):
+    """Re-calibrate every accepted continuous parameter together (bounded
+    least squares on the model itself, not the interpolant) once two or more
+    are accepted: an effect calibrated alone absorbs part of the next one.
+    Intervals: +-1.96 standard errors from the Jacobian, (J^T J)^-1.
+    Updates ``accepted`` in place; returns (setting, prediction) or None."""
+    from scipy.optimize import least_squares
+
+    idx = [i for i, c in enumerate(cands) if c.kind == "parameter"]
+    if len(idx) < 2:
+        return None
+
+    def setting(theta):
+        st = _Setting((), (), ())
+        vals = {i: t for i, t in zip(idx, theta, strict=False)}
+        for i, c in enumerate(cands):
+            st = st.apply(c, float(vals.get(i, accepted[i]["value"])), base_options)
+        return st
+
+    def resid(theta):
+        return ((y - _predict(model, setting(theta), cond, quantity)) / s)[train]
+
+    x0 = np.array([accepted[i]["value"] for i in idx])
+    lo = np.array([cands[i].lower for i in idx])
+    hi = np.array([cands[i].upper for i in idx])
+    try:
+        res = least_squares(
+            resid,
+            np.clip(x0, lo, hi),
+            bounds=(lo, hi),
+            diff_step=1e-4,
+            x_scale=hi - lo,
+            max_nfev=60,
+        )
+        cov = np.linalg.inv(res.jac.T @ res.jac)
+    except (ThermobearError, np.linalg.LinAlgError):
+        return None
+    se = np.sqrt(np.clip(np.diag(cov), 0.0, None))
+    for k, i in enumerate(idx):
+        accepted[i].update(
+            value=float(res.x[k]),
+            lower_95=float(max(lo[k], res.x[k] - 1.96 * se[k])),
+            upper_95=float(min(hi[k], res.x[k] + 1.96 * se[k])),
+            joint=True,
+        )
+    st = setting(res.x)
+    return st, _predict(model, st, cond, quantity)
+
+
+def select(rows: list, tie_delta_bic: float) -> tuple[Optional[dict], list]:
+    """The best passing screening row (largest delta-BIC; None when no row
+    passes) and its rivals: every other candidate -- passing or not -- whose
+    delta-BIC is less than ``tie_delta_bic`` below the best's (a higher one
+    included), which make a tie set."""
+    passing = [row for row in rows if row["passes"]]
+    if not passing:
+        return None, []
+    best = max(passing, key=lambda row: row["delta_bic"])
+    rivals = [
+        row["candidate"]
+        for row in rows
+        if row["candidate"] != best["candidate"]
+        and best["delta_bic"] - row["delta_bic"] < tie_delta_bic
+    ]
+    return best, rivals
+
+
+def accepted_record(c: Candidate, best: dict, rnd: int) -> dict:
+    """The record of an accepted candidate (``Diagnosis.accepted``) from
+    its screening row in round ``rnd`` (0-based)."""
+    return {
+        "name": c.name,
+        "side": c.side,
+        "role": c.role,
+        "parameter": c.parameter,
+        "null": c.null,
+        "unit": c.unit,
+        "value": best["value"],
+        "lower_95": best["lower_95"],
+        "upper_95": best["upper_95"],
+        "delta_bic": best["delta_bic"],
+        "round": rnd + 1,
+    }

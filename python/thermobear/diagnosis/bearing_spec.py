@@ -1,0 +1,127 @@
+"""The model spec of one bearing (:class:`BearingModelSpec`) and the
+baseline of a system description (:func:`model_from_toml`)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Optional, Sequence, Union
+
+import numpy as np
+
+from ..errors import ConfigError, ThermobearError
+from .candidates import Candidate, _candidate_list
+from .measurements import QUANTITIES
+from .protocol import ModelSpec
+from .registry import _THERMAL_DEFAULTS
+
+
+class BearingModelSpec(ModelSpec):
+    """The baseline model of one bearing: :class:`~thermobear.Bearing`,
+    ``effects`` (names; None = all) and the keyword options of
+    :func:`thermobear.thermal_state` (``lubricant``,
+    ``lubrication_factor_f0``, ``spin_friction``, ``oil_air_temperature_c``,
+    ``ambient_temperature_c``, ``housing_material``, ``raceway_control``,
+    ``extra_heat_w``, ``housing_conductance_scale``).
+    Evaluates every quantity of :data:`QUANTITIES` at given conditions; each
+    configuration is solved once per set of conditions (cached).
+
+    The protocol :func:`diagnose` uses (a spec of another machine, such as
+    :class:`thermobear.SpindleModelSpec`, provides the same): ``quantities``
+    (the quantity registry), ``candidate_list(quantities)``,
+    ``predict(conditions)``, ``with_setting(add_effects, **options)``,
+    ``options``, ``effects``."""
+
+    #: The quantities this model predicts (see :data:`QUANTITIES`).
+    quantities = QUANTITIES
+
+    def __init__(self, bearing: Any, effects: Optional[Sequence[str]] = None, **options: Any):
+        from .. import _native
+        from ..bearing import Bearing
+
+        if not isinstance(bearing, Bearing):
+            raise ConfigError(f"invalid bearing = {bearing!r}: give a thermobear.Bearing")
+        known = [n for n, *_ in _native.effects()]
+        eff = list(known) if effects is None else [str(e) for e in effects]
+        for e in eff:
+            if e not in known:
+                raise ConfigError(f"invalid effect = {e!r}: known: {', '.join(known)}")
+        for k in options:
+            if k not in _THERMAL_DEFAULTS:
+                raise ConfigError(
+                    f"invalid option = {k!r}: known: {', '.join(sorted(_THERMAL_DEFAULTS))}"
+                )
+        self.bearing = bearing
+        self.effects = tuple(sorted(eff))
+        self.options = {**_THERMAL_DEFAULTS, **options}
+        self._cache: dict = {}
+
+    def with_setting(self, add_effects: Sequence[str] = (), **options: Any) -> "BearingModelSpec":
+        """A copy with effects added and options replaced (shares the cache)."""
+        new = object.__new__(BearingModelSpec)
+        new.bearing = self.bearing
+        new.effects = tuple(sorted(set(self.effects) | set(add_effects)))
+        new.options = {**self.options, **options}
+        new._cache = self._cache
+        return new
+
+    def predict(self, conditions: "polars.DataFrame") -> dict[str, np.ndarray]:  # noqa: F821
+        """Every supported quantity at each row of ``conditions``
+        (``speed_rpm``, ``axial_n``, ``radial_n``): name -> array."""
+        from ..thermal import thermal_stiffness_curve
+
+        sp = conditions["speed_rpm"].to_numpy()
+        ax = conditions["axial_n"].to_numpy()
+        ra = conditions["radial_n"].to_numpy()
+        out = {q: np.empty(len(sp)) for q in QUANTITIES}
+        for a, r in sorted(set(zip(ax.tolist(), ra.tolist(), strict=False))):
+            rows = np.flatnonzero((ax == a) & (ra == r))
+            speeds = np.unique(sp[rows])
+            key = (self._key(), a, r, tuple(speeds.tolist()))
+            if key not in self._cache:
+                try:
+                    df = thermal_stiffness_curve(
+                        self.bearing, speeds, a, r, effects=list(self.effects), **self.options
+                    )
+                except ThermobearError as e:  # a failing configuration fails every time
+                    self._cache[key] = e
+                    raise
+                self._cache[key] = {
+                    q: df[c].to_numpy() * s for q, (c, s, *_rest) in QUANTITIES.items()
+                }
+            res = self._cache[key]
+            if isinstance(res, ThermobearError):
+                raise res
+            idx = np.searchsorted(speeds, sp[rows])
+            for q in QUANTITIES:
+                out[q][rows] = res[q][idx]
+        return out
+
+    def candidate_list(self, quantities: Sequence[str] = ()) -> list[Candidate]:
+        """The candidates against this baseline, with a sensor-offset decoy
+        per measured quantity in ``quantities``."""
+        return _candidate_list(self, quantities)
+
+    def __repr__(self) -> str:
+        return f"BearingModelSpec({self.bearing!r}, effects={list(self.effects)})"
+
+
+def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, dict]:
+    """The baseline :class:`BearingModelSpec` of a system description
+    ([bearing], [model] effects, raceway_control, extra_heat_w and
+    housing_conductance_scale; the other thermal options take their
+    :func:`thermobear.thermal_state` defaults) and its [operating]
+    table (loads for measurements that give none)."""
+    from ..bearing import Bearing
+    from ..config import load_config, read_toml
+
+    text = load_config(path_or_text)
+    cfg = read_toml(text)
+    mdl = cfg.get("model", {})
+    opts = {}
+    if "raceway_control" in mdl:
+        opts["raceway_control"] = mdl["raceway_control"]
+    for key in ("extra_heat_w", "housing_conductance_scale", "churning_oil_fraction"):
+        if key in mdl:
+            opts[key] = float(mdl[key])
+    spec = BearingModelSpec(Bearing.from_toml(text), effects=mdl.get("effects"), **opts)
+    return spec, cfg.get("operating", {})

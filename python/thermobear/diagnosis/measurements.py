@@ -1,0 +1,265 @@
+"""Step 0 of :func:`thermobear.diagnose`: the measured data. The bearing's
+quantity registry (:data:`QUANTITIES`), reading and checking a tidy
+measurement table, typical uncertainties, synthetic measurements for tests,
+and the held-out points."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Optional, Sequence
+
+import numpy as np
+
+from ..errors import ConfigError, DataError
+
+#: Supported measured quantities: model column, scale to the quantity's
+#: unit, plausible range (lo, hi) and a typical measurement uncertainty
+#: (used for sigma when the data give none and to weigh the extra-
+#: measurement suggestion): thermocouples +-0.5 K, stiffness and heat 2 %.
+QUANTITIES: dict[str, tuple[str, float, tuple[float, float], float, bool]] = {
+    # name: (column, scale, (lo, hi), typical sigma, sigma is relative)
+    "temperature_c:Ts": ("shaft_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
+    "temperature_c:Ti": ("inner_ring_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
+    "temperature_c:Tb": ("ball_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
+    "temperature_c:To": ("outer_ring_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
+    "temperature_c:Th": ("housing_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
+    "radial_stiffness_n_per_m": ("radial_stiffness_n_per_m", 1.0, (1e5, 1e11), 0.02, True),
+    "axial_stiffness_n_per_m": ("axial_stiffness_n_per_m", 1.0, (1e5, 1e11), 0.02, True),
+    "heat_w": ("heat_w", 1.0, (0.0, 1e5), 0.02, True),
+    "axial_displacement_um": ("axial_displacement_mm", 1000.0, (-1e4, 1e4), 0.5, False),
+    "inner_contact_angle_deg": ("inner_contact_angle_max_deg", 1.0, (0.0, 90.0), 0.2, False),
+}
+
+
+def load_measurements(data: Any, quantities: Optional[dict] = None) -> "polars.DataFrame":  # noqa: F821
+    """Read and check a tidy measurement table (CSV or parquet path, or a
+    polars/pandas frame). ``quantities``: the quantity registry of the model
+    the data are for (default :data:`QUANTITIES`, the single bearing's; a
+    model spec's is its ``quantities`` attribute).
+
+    Columns: ``speed_rpm``; ``axial_n`` or ``preload_n`` (the preload is the
+    axial load of a single bearing); optional ``radial_n`` (default 0);
+    ``quantity`` (one of :data:`QUANTITIES`); ``value``; optional ``sigma``
+    (same unit as the value; default: the quantity's typical uncertainty);
+    optional ``run`` (label). Raises :class:`DataError` for a missing column,
+    an unknown quantity, a non-numeric, NaN or infinite value, a sigma <= 0,
+    a negative speed, and values outside the quantity's plausible range: a
+    ``temperature_c`` quantity whose values are all 200-500 is reported as
+    given in kelvin; stiffness must be 1e5-1e11 N/m (values below look like
+    N/um), heat 0-1e5 W, contact angle 0-90 deg.
+    """
+    df = _read_table(data)
+    df = _operating_columns(df)
+    df = _numeric_columns(df)
+    table = QUANTITIES if quantities is None else quantities
+    df = _checked_quantities(df, table)
+    return _with_sigma_and_run(df, table)
+
+
+def _read_table(data: Any) -> Any:
+    """A polars frame from a CSV or parquet path, a polars or a pandas frame."""
+    import polars as pl
+
+    if isinstance(data, (str, Path)):
+        p = Path(data)
+        try:
+            return pl.read_parquet(p) if p.suffix == ".parquet" else pl.read_csv(p)
+        except Exception as e:  # noqa: BLE001  (polars raises several types)
+            raise DataError(f"invalid measurements = {p}: cannot read: {e}") from None
+    if isinstance(data, pl.DataFrame):
+        return data
+    if hasattr(data, "to_dict") and hasattr(data, "columns"):
+        return pl.from_pandas(data)
+    raise DataError(f"invalid measurements = {type(data).__name__}: give a path or a frame")
+
+
+def _operating_columns(df: Any) -> Any:
+    """The required columns present; ``preload_n`` stored as ``axial_n``;
+    ``radial_n`` 0 when missing; at least one row."""
+    import polars as pl
+
+    cols = set(df.columns)
+    for c in ("speed_rpm", "quantity", "value"):
+        if c not in cols:
+            raise DataError(f"invalid measurements: missing column {c!r} (have {sorted(cols)})")
+    if "axial_n" not in cols and "preload_n" not in cols:
+        raise DataError("invalid measurements: missing column 'axial_n' or 'preload_n'")
+    if "axial_n" not in cols:
+        df = df.rename({"preload_n": "axial_n"})
+    elif "preload_n" in cols:
+        raise DataError("invalid measurements: give 'axial_n' or 'preload_n', not both")
+    if "radial_n" not in df.columns:
+        df = df.with_columns(pl.lit(0.0).alias("radial_n"))
+    if df.height == 0:
+        raise DataError("invalid measurements: the table has no rows")
+    return df
+
+
+def _numeric_columns(df: Any) -> Any:
+    """Speeds, loads, values (and sigmas) as finite floats; speeds and
+    axial loads not negative."""
+    import polars as pl
+
+    for c in ("speed_rpm", "axial_n", "radial_n", "value") + (
+        ("sigma",) if "sigma" in df.columns else ()
+    ):
+        try:
+            x = df[c].cast(pl.Float64, strict=True).to_numpy()
+        except Exception:  # noqa: BLE001
+            raise DataError(f"invalid {c}: not numeric (dtype {df[c].dtype})") from None
+        bad = ~np.isfinite(x)
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise DataError(f"invalid {c} = {x[i]} in row {i}: NaN, infinite or missing")
+        df = df.with_columns(pl.Series(c, x))
+    if (df["speed_rpm"] < 0).any():
+        raise DataError(f"invalid speed_rpm = {df['speed_rpm'].min()}: negative")
+    if (df["axial_n"] < 0).any():
+        raise DataError(f"invalid axial_n = {df['axial_n'].min()}: negative")
+    return df
+
+
+def _checked_quantities(df: Any, table: dict) -> Any:
+    """Every quantity known to ``table`` and its values in the plausible
+    range (temperatures all in 200-500 are reported as kelvin)."""
+    import polars as pl
+
+    df = df.with_columns(pl.col("quantity").cast(pl.Utf8))
+    for q in df["quantity"].unique().to_list():
+        if q not in table:
+            raise DataError(f"invalid quantity = {q!r}: known: {', '.join(table)}")
+        v = df.filter(pl.col("quantity") == q)["value"].to_numpy()
+        lo, hi = table[q][2]
+        if q.startswith("temperature_c") and np.all((v > 200.0) & (v < 500.0)):
+            raise DataError(
+                f"invalid value = {v[0]} for {q}: looks like kelvin; give deg C (subtract 273.15)"
+            )
+        if np.any(v < lo) or np.any(v > hi):
+            w = v[(v < lo) | (v > hi)][0]
+            raise DataError(f"invalid value = {w} for {q}: outside the plausible {lo:g}..{hi:g}")
+    return df
+
+
+def _with_sigma_and_run(df: Any, table: dict) -> Any:
+    """Sigma checked (> 0) or the typical one; run labels as text ("1"
+    when missing); the tidy columns in order."""
+    import polars as pl
+
+    if "sigma" in df.columns:
+        if (df["sigma"] <= 0).any():
+            raise DataError(f"invalid sigma = {df['sigma'].min()}: must be > 0")
+    else:
+        s = typical_sigma(table, df["quantity"].to_list(), df["value"].to_numpy())
+        df = df.with_columns(pl.Series("sigma", s))
+    if "run" not in df.columns:
+        df = df.with_columns(pl.lit("1").alias("run"))
+    df = df.with_columns(pl.col("run").cast(pl.Utf8))
+    return df.select(["speed_rpm", "axial_n", "radial_n", "quantity", "value", "sigma", "run"])
+
+
+def typical_sigma(table: dict, quantities: Sequence[str], values: np.ndarray) -> np.ndarray:
+    """Typical measurement uncertainty of each value, from a quantity
+    registry (``table[q][3]``: absolute, or relative when ``table[q][4]``)."""
+    typ = np.array([table[q][3] for q in quantities], dtype=float)
+    rel = np.array([table[q][4] for q in quantities], dtype=bool)
+    return np.where(rel, typ * np.abs(np.asarray(values, dtype=float)), typ)
+
+
+def synthetic_measurements(
+    truth: Any,
+    conditions: "polars.DataFrame",  # noqa: F821
+    noise: float = 1.0,
+    seed: int = 0,
+) -> "polars.DataFrame":  # noqa: F821
+    """Synthetic "measurements" for testing a diagnosis: ``truth``'s
+    prediction of each row of ``conditions`` (operating columns and
+    ``quantity``; ``preload_n`` may stand for ``axial_n``) plus Gaussian
+    noise of ``noise`` times the quantity's typical uncertainty
+    (:func:`typical_sigma` over ``truth.quantities``), with that sigma as
+    the ``sigma`` column; reproducible by ``seed``."""
+    import polars as pl
+
+    cond = conditions
+    if "preload_n" in cond.columns:
+        cond = cond.rename({"preload_n": "axial_n"})
+    p = truth.predict(cond)
+    q = conditions["quantity"].to_list()
+    value = np.array([p[qq][i] for i, qq in enumerate(q)])
+    sig = noise * typical_sigma(truth.quantities, q, value)
+    rng = np.random.default_rng(seed)
+    return conditions.with_columns(
+        pl.Series("value", value + rng.normal(size=len(value)) * sig), pl.Series("sigma", sig)
+    )
+
+
+def holdout_mask(df, holdout) -> np.ndarray:
+    speed = df["speed_rpm"].to_numpy()
+    if holdout is None or holdout == "none":
+        return np.zeros(len(speed), dtype=bool)
+    if isinstance(holdout, str) and holdout == "highest_speeds":
+        holdout = 0.25
+    if isinstance(holdout, (float, int)) and not isinstance(holdout, bool):
+        frac = float(holdout)
+        if not 0.0 < frac < 1.0:
+            raise ConfigError(f"invalid holdout = {holdout}: a fraction in (0, 1)")
+        us = np.unique(speed)
+        if len(us) < 3:
+            raise DataError(
+                f"invalid measurements: {len(us)} distinct speeds; holding out the highest "
+                "speeds needs at least 3"
+            )
+        k = min(max(1, int(round(frac * len(us)))), len(us) - 2)
+        return speed >= us[-k]
+    runs = [str(r) for r in (holdout if not isinstance(holdout, str) else [holdout])]
+    have = set(df["run"].to_list())
+    for r in runs:
+        if r not in have:
+            raise DataError(f"invalid holdout run = {r!r}: runs in the data: {sorted(have)}")
+    mask = np.isin(df["run"].to_numpy(), runs)
+    if mask.all():
+        raise DataError("invalid holdout: every point is held out; no training data left")
+    return mask
+
+
+@dataclass(frozen=True)
+class MeasuredData:
+    """The checked measurements of one diagnosis: the tidy table ``df``,
+    each row's ``quantity``, value ``y`` and ``sigma`` ``s``, the operating
+    conditions ``cond`` (``speed_rpm``, ``axial_n``, ``radial_n``) and the
+    held-out mask ``held``."""
+
+    df: Any
+    quantity: np.ndarray
+    y: np.ndarray
+    s: np.ndarray
+    cond: Any
+    held: np.ndarray
+
+    @property
+    def train(self) -> np.ndarray:
+        """The training points (not held out)."""
+        return ~self.held
+
+    @property
+    def n_train(self) -> int:
+        return int(self.train.sum())
+
+    def residual(self, pred: np.ndarray) -> np.ndarray:
+        """(value - prediction) / sigma of every row."""
+        return (self.y - pred) / self.s
+
+
+def prepare_measurements(measured: Any, quantities: dict, holdout: Any) -> MeasuredData:
+    """Step 0: read and check ``measured`` against a quantity registry
+    (:func:`load_measurements`) and split off the held-out points
+    (:func:`holdout_mask`)."""
+    df = load_measurements(measured, quantities)
+    return MeasuredData(
+        df,
+        df["quantity"].to_numpy(),
+        df["value"].to_numpy(),
+        df["sigma"].to_numpy(),
+        df.select(["speed_rpm", "axial_n", "radial_n"]),
+        holdout_mask(df, holdout),
+    )

@@ -1,0 +1,112 @@
+"""The effects registry (``thermobear.effects()``) and the bearing's
+calibratable inputs with their physical bounds and baseline values."""
+
+from __future__ import annotations
+
+from typing import Optional
+
+from ..errors import ConfigError
+
+# Parameter candidates: (name, option, unit, lo, hi, offset?, description).
+# Bounds: f0 0.5-6 spans Palmgren's f0 for oil-air / oil-mist (1-2) up to
+# oil bath and jet (4-6) (Harris & Kotzalas, Rolling Bearing Analysis,
+# table of f0); spin friction coefficient 0-0.3 (boundary to dry contact);
+# oil-air and ambient temperatures +-10/+20 K (cooling-air supply drift);
+# extra bearing heat 0-100 W (up to about the whole friction heat of a
+# 40-45 mm angular-contact bearing at 18000 rpm, the seed B magnetic-pull
+# friction being a fraction of it); housing-to-ambient conductance scale
+# 0.1-10 (a decade either way of natural convection from the bare cylinder:
+# an enclosed, insulated housing below, a finned or ventilated one or one
+# conducting into the machine frame above; natural and slow forced air
+# convection coefficients differ by about a decade, 5-10 vs 25-100 W/m^2K);
+# churning oil volume fraction X of the cavity mixture 0-5 % (0: dry air;
+# our assumed upper end for a jet-lubricated, partly flooded cavity -- an oil
+# bath is the f0 range above; at 5 % a 7008C at 18,000 rpm dissipates
+# ~90 W of ball drag, about half its total friction heat).
+_PARAMETERS = (
+    # (name, option, unit, lower, upper, offset?, role, description)
+    ("lubrication_factor_f0", "lubrication_factor_f0", "1", 0.5, 6.0, False, "calibration",
+     "viscous friction moment scale (Palmgren f0)"),
+    ("spin_friction_coefficient", "spin_friction", "1", 0.0, 0.3, False, "calibration",
+     "spin friction coefficient mu_s (needs the spin_friction effect on)"),
+    ("oil_air_temperature_offset_k", "oil_air_temperature_c", "K", -10.0, 20.0, True,
+     "calibration", "oil-air (cooling) temperature differs from the assumed one"),
+    ("ambient_temperature_offset_k", "ambient_temperature_c", "K", -10.0, 20.0, True,
+     "calibration", "ambient temperature differs from the assumed one"),
+    ("extra_heat_w", "extra_heat_w", "W", 0.0, 100.0, False, "effect",
+     "extra heat at the bearing (e.g. magnetic-pull friction), split like rolling heat"),
+    ("housing_conductance_scale", "housing_conductance_scale", "1", 0.1, 10.0, False, "effect",
+     "housing-to-ambient conductance differs from the bare natural-convection cylinder"),
+    ("churning_oil_fraction", "churning_oil_fraction", "1", 0.0, 0.05, False, "effect",
+     "churning: drag of the balls in the oil-air mixture, ~ speed^3 (oil volume fraction X)"),
+)  # fmt: skip
+
+
+#: ``affects`` of an effect that acts only in the spindle or rotor model.
+NOT_IN_BEARING = "not in the single-bearing model"
+
+
+_HOUSING_MATERIALS = ("aluminium", "cast-iron", "shaft-steel")
+
+
+_THERMAL_DEFAULTS = {
+    "lubricant": "e-drive ATF",
+    "lubrication_factor_f0": 1.0,
+    "spin_friction": 0.06,
+    "oil_air_temperature_c": 28.0,
+    "ambient_temperature_c": 26.0,
+    "housing_material": "aluminium",
+    "raceway_control": "outer",
+    "extra_heat_w": 0.0,
+    "housing_conductance_scale": 1.0,
+    "churning_oil_fraction": 0.0,
+}
+
+
+#: Effects that are switches and also have a calibratable coefficient:
+#: name -> (option, unit, lower, upper); bounds as in :data:`_PARAMETERS`.
+_SWITCH_COEFFICIENTS = {"spin_friction": ("spin_friction", "1", 0.0, 0.3)}
+
+
+#: Switches that are off in the default models (the rotor's default leaves
+#: the magnetic pull out: its inputs are an assumption about the motor).
+_OFF_BY_DEFAULT = ("unbalanced_magnetic_pull",)
+
+
+def effect_registry(kind: Optional[str] = None) -> "polars.DataFrame":  # noqa: F821
+    """The effects registry (``thermobear.effects()``): one row per physical
+    effect. ``name``; ``kind``: "switch" (a named effect, on when listed in
+    ``effects=[...]``) or "term" (an input whose ``off`` value leaves the
+    term out, e.g. ``extra_heat_w`` = 0); ``models``: the models it acts in
+    (comma-joined: bearing, spindle, rotor); ``parameter``, ``unit``,
+    ``lower``, ``upper``: the calibratable input and its physical bounds
+    ("on", 0-1 for a plain switch); ``default``: its value in the default
+    model; ``off``: the value without the effect; ``description``."""
+    import polars as pl
+
+    from .. import _native
+
+    if kind not in (None, "switch", "term"):
+        raise ConfigError(f"invalid kind = {kind!r}: None, 'switch' or 'term'")
+    rows = []
+    for name, desc, models in _native.effects():
+        on = 0.0 if name in _OFF_BY_DEFAULT else 1.0
+        if name in _SWITCH_COEFFICIENTS:
+            opt, unit, lo, hi = _SWITCH_COEFFICIENTS[name]
+            rows.append(
+                (name, "switch", ",".join(models), opt, unit, lo, hi,
+                 float(_THERMAL_DEFAULTS[opt]) * on, 0.0, desc)
+            )  # fmt: skip
+        else:
+            rows.append((name, "switch", ",".join(models), "on", "1", 0.0, 1.0, on, 0.0, desc))
+    for name, opt, unit, lo, hi, _off, role, desc in _PARAMETERS:
+        if role == "effect":
+            null = float(_THERMAL_DEFAULTS[opt])
+            rows.append((name, "term", "bearing", opt, unit, lo, hi, null, null, desc))
+    df = pl.DataFrame(
+        rows,
+        schema=["name", "kind", "models", "parameter", "unit", "lower", "upper", "default",
+                "off", "description"],
+        orient="row",
+    )  # fmt: skip
+    return df if kind is None else df.filter(pl.col("kind") == kind)

@@ -1,0 +1,57 @@
+"""A setting: the baseline plus applied candidates (effects switched on,
+options replaced, sensor offsets), and the prediction of every measured row
+under it."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from .candidates import Candidate
+from .protocol import ModelSpec
+
+
+@dataclass(frozen=True)
+class _Setting:
+    effects: tuple[str, ...] = ()
+    options: tuple[tuple[str, Any], ...] = ()
+    offsets: tuple[tuple[str, float, bool], ...] = ()  # (quantity, value, relative)
+
+    def apply(self, c: Candidate, value: float, base_options: dict) -> "_Setting":
+        opts = dict(self.options)
+        if c.side == "measurement":
+            return _Setting(
+                self.effects, self.options, self.offsets + ((c.quantity, value, c.relative),)
+            )
+        if c.kind == "switch":
+            if c.effect:
+                return (
+                    _Setting(
+                        tuple(sorted(set(self.effects) | {c.effect})), self.options, self.offsets
+                    )
+                    if value >= 0.5
+                    else self
+                )
+            if value < 0.5:
+                return self
+            opts[c.option] = c.name.split(":", 1)[1]
+        else:
+            cur = float(opts.get(c.option, base_options[c.option]))
+            opts[c.option] = cur + value if c.offset else value
+        return _Setting(self.effects, tuple(sorted(opts.items())), self.offsets)
+
+
+def _predict(model: ModelSpec, st: _Setting, cond: Any, quantity: np.ndarray) -> np.ndarray:
+    """Prediction of each measured row (its own quantity) under a setting."""
+    m = model.with_setting(st.effects, **dict(st.options))
+    allq = m.predict(cond)
+    y = np.empty(len(quantity))
+    for q in np.unique(quantity):
+        rows = quantity == q
+        y[rows] = allq[q][rows]
+    for q, v, rel in st.offsets:
+        rows = quantity == q
+        y[rows] = y[rows] * (1.0 + v) if rel else y[rows] + v
+    return y

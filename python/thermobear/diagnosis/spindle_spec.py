@@ -1,0 +1,508 @@
+"""The discrepancy workflow of :mod:`thermobear.diagnosis` on a motorized
+spindle (issue 6, seed B): :class:`SpindleModelSpec` is the spindle's model
+in the protocol :func:`thermobear.diagnose` uses (``predict(conditions)``
+over every supported quantity, ``with_setting(effects, **options)`` sharing
+one cache, ``options``, ``effects``), with its own quantity and candidate
+registry; :func:`diagnose_spindle` runs the unchanged screening, acceptance
+and gap machinery of :mod:`thermobear.diagnosis` with that registry.
+
+Quantities (:data:`SPINDLE_QUANTITIES`): outer-ring (and other node)
+temperatures of the front and rear bearings from
+:meth:`thermobear.Spindle.thermal_state`, the axial thermal growth, and the
+shaft-end vibration velocity RMS from :func:`thermobear.vibration`, coupled
+(thermal raceway offsets, A-38) exactly when a thermal-expansion effect is
+on. Conditions: ``speed_rpm`` and ``preload_n`` (stored as ``axial_n`` by
+:func:`thermobear.load_measurements`; a spindle's axial load is its preload).
+
+Candidates: every effect the baseline leaves off as a switch, plus
+``thermal_displacement`` (the five thermal-expansion effects together:
+seed B's "model with thermal displacement"), the spin friction coefficient,
+the preload kind (rigid <-> constant-force spring), the spring rate when the
+preload is a spring, the rotor's residual unbalance grade (G0.4-G6.3), and
+one sensor-offset decoy per measured quantity.
+"""
+
+from __future__ import annotations
+
+from importlib import resources
+from typing import Any, Optional, Sequence, Union
+
+import numpy as np
+
+from ..errors import ConfigError, ThermobearError
+from ..spindle.spindle import Spindle, _state_row
+from .candidates import Candidate, sensor_offset_candidates
+from .candidates import candidates as _candidate_table
+from .measurements import load_measurements
+from .protocol import ModelSpec
+from .result import Diagnosis
+from .screening import _GRID
+from .workflow import diagnose
+
+__all__ = [
+    "SPINDLE_QUANTITIES",
+    "THERMAL_DISPLACEMENT_EFFECTS",
+    "SpindleModelSpec",
+    "diagnose_spindle",
+    "load_spindle_measurements",
+    "seed_b_measurements",
+    "spindle_candidates",
+]
+
+#: The thermal-expansion effects whose raceway offsets (A-38) make up seed
+#: B's "thermal displacement"; switching all of them off is the paper's
+#: uncoupled model.
+THERMAL_DISPLACEMENT_EFFECTS: tuple[str, ...] = (
+    "thermal_expansion_balls",
+    "thermal_expansion_housing",
+    "thermal_expansion_inner_ring",
+    "thermal_expansion_outer_ring",
+    "thermal_expansion_shaft",
+)
+_GROUP = "thermal_displacement"
+
+_T_RANGE = (-60.0, 250.0)
+#: name: (model column, scale, plausible range, typical sigma, relative?) --
+#: the layout of :data:`thermobear.diagnosis.QUANTITIES`. Thermocouples
+#: +-0.5 K; laser-Doppler vibrometer velocity 5 % (the Polytec OFV-505 of
+#: seed B's test; 5 % is our assumption for the whole chain, the paper gives
+#: none); axial growth 0.5 um (capacitive probe, assumed); operating
+#: preload of the front pair 2 % (a load washer or strain-gauged spacer in
+#: the preload path, assumed).
+SPINDLE_QUANTITIES: dict[str, tuple[str, float, tuple[float, float], float, bool]] = {
+    "temperature_c:front_outer": ("front_outer_c", 1.0, _T_RANGE, 0.5, False),
+    "temperature_c:rear_outer": ("rear_outer_c", 1.0, _T_RANGE, 0.5, False),
+    "temperature_c:front_inner": ("front_inner_c", 1.0, _T_RANGE, 0.5, False),
+    "temperature_c:rear_inner": ("rear_inner_c", 1.0, _T_RANGE, 0.5, False),
+    "temperature_c:front_housing": ("housing_front_c", 1.0, _T_RANGE, 0.5, False),
+    "temperature_c:rear_housing": ("housing_rear_c", 1.0, _T_RANGE, 0.5, False),
+    "axial_growth_um": ("axial_growth_um", 1.0, (-1e4, 1e4), 0.5, False),
+    "operating_preload_n": ("operating_preload_n", 1.0, (0.0, 1e5), 0.02, True),
+    "velocity_rms_mm_s": ("velocity_rms_mm_s", 1.0, (0.0, 1e3), 0.05, True),
+}
+_VIB = "velocity_rms_mm_s"
+
+#: Options of the spindle model and their bounds as candidates. Spin
+#: friction coefficient 0-0.3 as in thermobear.diagnosis (boundary to dry
+#: contact); spring rate 0.05-3 N/um brackets seed B's 0.36 N/um disc
+#: springs by an order of magnitude each way (assumed range).
+_SPIN_BOUNDS = (0.0, 0.3)
+_SPRING_BOUNDS = (0.05, 3.0)
+#: Residual unbalance grade of the rotor [mm/s]: ISO 21940-11 balance
+#: quality grades from G0.4 (precision grinding spindles) to G6.3 (the
+#: coarsest grade the standard's table suggests for machine-tool parts and
+#: electric motors); a rotor outside this range is not a finished spindle.
+_UNBALANCE_BOUNDS = (0.4, 6.3)
+_OPTIONS = ("spin_friction", "preload_kind", "spring_rate_n_per_um", "unbalance_grade")
+
+
+class SpindleModelSpec(ModelSpec):
+    """The baseline model of a spindle: a :class:`~thermobear.Spindle`,
+    ``effects`` (names, or ``"thermal_displacement"`` for the five
+    thermal-expansion effects; None = every effect) and options
+    ``spin_friction`` (coefficient), ``preload_kind`` ("rigid" or "spring"),
+    ``spring_rate_n_per_um`` and ``unbalance_grade`` (ISO 21940 grade of the
+    rotor, mm/s; default G2.5) -- each defaults to the spindle's own.
+    Each configuration, preload and speed is solved once (cached, shared by
+    the copies of :meth:`with_setting`)."""
+
+    #: The quantities this model predicts (:data:`SPINDLE_QUANTITIES`).
+    quantities = SPINDLE_QUANTITIES
+
+    def candidate_list(self, quantities: Sequence[str] = ()) -> list[Candidate]:
+        """The spindle's candidates against this baseline, with a
+        sensor-offset decoy per measured quantity in ``quantities``."""
+        return _spindle_candidate_list(self, quantities)
+
+    def __init__(self, spindle: Any, effects: Optional[Sequence[str]] = None, **options: Any):
+        from .. import _native
+
+        if not isinstance(spindle, Spindle):
+            raise ConfigError(f"invalid spindle = {spindle!r}: give a thermobear.Spindle")
+        for k in options:
+            if k not in _OPTIONS:
+                raise ConfigError(f"invalid option = {k!r}: known: {', '.join(_OPTIONS)}")
+        self.spindle = spindle
+        self._known = tuple(n for n, *_ in _native.effects())
+        self.effects = self._expand(list(self._known) if effects is None else effects)
+        defaults = {
+            "spin_friction": _default_spin_friction(spindle),
+            "preload_kind": spindle.preload_kind,
+            "spring_rate_n_per_um": spindle.spring_rate_n_per_um,
+            "unbalance_grade": 2.5,
+        }
+        self.options = {**defaults, **options}
+        _check_options(self.options)
+        self._cache: dict = {}
+
+    def _expand(self, effects: Sequence[str]) -> tuple[str, ...]:
+        out: set[str] = set()
+        for e in effects:
+            e = str(e)
+            if e == _GROUP:
+                out |= set(THERMAL_DISPLACEMENT_EFFECTS)
+            elif e in self._known:
+                out.add(e)
+            else:
+                raise ConfigError(
+                    f"invalid effect = {e!r}: known: {', '.join(self._known)}, {_GROUP}"
+                )
+        return tuple(sorted(out))
+
+    def with_setting(self, add_effects: Sequence[str] = (), **options: Any) -> "SpindleModelSpec":
+        """A copy with effects added and options replaced (shares the cache)."""
+        new = object.__new__(SpindleModelSpec)
+        new.spindle = self.spindle
+        new._known = self._known
+        new.effects = new._expand(list(self.effects) + list(add_effects))
+        new.options = {**self.options, **options}
+        _check_options(new.options)
+        new._cache = self._cache
+        return new
+
+    @property
+    def coupled(self) -> bool:
+        """Whether the vibration uses the thermal raceway offsets (any
+        thermal-expansion effect on)."""
+        return bool(set(self.effects) & set(THERMAL_DISPLACEMENT_EFFECTS))
+
+    def configured(self, preload_n: float) -> Spindle:
+        """The :class:`~thermobear.Spindle` of this configuration at a preload."""
+        o = self.options
+        spring = o["preload_kind"] == "spring"
+        return self.spindle.with_options(
+            preload_n=float(preload_n),
+            preload_kind=o["preload_kind"],
+            spring_rate_n_per_um=float(o["spring_rate_n_per_um"]) if spring else None,
+            effects=list(self.effects),
+            spin_friction=float(o["spin_friction"]),
+        )
+
+    def _state(self, preload_n: float, speed_rpm: float) -> dict:
+        # the rotor's unbalance does not enter the thermal model
+        opts = tuple(sorted((k, str(v)) for k, v in self.options.items() if k != "unbalance_grade"))
+        key = ("state", self.effects, opts, preload_n, speed_rpm)
+        if key not in self._cache:
+            sp = self.configured(preload_n)
+            try:
+                d = sp._native.steady_state(float(speed_rpm))
+            except ThermobearError as e:  # a failing configuration fails every time
+                self._cache[key] = e
+                raise
+            offsets = {
+                "front": tuple(float(v) for v in d["front_raceway_offsets_m"]),
+                "rear": tuple(float(v) for v in d["rear_raceway_offsets_m"]),
+            }
+            self._cache[key] = (_state_row(d, sp), offsets)
+        res = self._cache[key]
+        if isinstance(res, ThermobearError):
+            raise res
+        return res
+
+    def _vibration(self, preload_n: float, speeds: np.ndarray) -> np.ndarray:
+        from ..rotor import vibration
+
+        key = ("vibration", self._key(), preload_n, tuple(speeds.tolist()))
+        if key not in self._cache:
+            rotor = _RotorView(self, preload_n)
+            try:
+                df = vibration(
+                    rotor,
+                    speeds,
+                    coupled=self.coupled,
+                    unbalance_grade=float(self.options["unbalance_grade"]),
+                    effects=list(self.effects),
+                )
+            except ThermobearError as e:
+                self._cache[key] = e
+                raise
+            self._cache[key] = df[_VIB].to_numpy()
+        res = self._cache[key]
+        if isinstance(res, ThermobearError):
+            raise res
+        return res
+
+    def predict(self, conditions: "polars.DataFrame") -> dict[str, np.ndarray]:  # noqa: F821
+        """Every quantity of :data:`SPINDLE_QUANTITIES` at each row of
+        ``conditions`` (``speed_rpm`` and ``axial_n`` or ``preload_n``):
+        name -> array. The vibration is computed only when asked for (the
+        returned mapping evaluates it on first access)."""
+        sp = conditions["speed_rpm"].to_numpy().astype(float)
+        radial = conditions["radial_n"].to_numpy() if "radial_n" in conditions.columns else []
+        if np.any(np.asarray(radial) != 0.0):
+            r = float(np.asarray(radial)[np.asarray(radial) != 0.0][0])
+            raise ConfigError(
+                f"invalid radial_n = {r}: a spindle's radial load is a setting of the "
+                "Spindle (with_options(radial_load_n=...)), not a measured condition"
+            )
+        col = "axial_n" if "axial_n" in conditions.columns else "preload_n"
+        pre = conditions[col].to_numpy().astype(float)
+        out = {q: np.empty(len(sp)) for q in SPINDLE_QUANTITIES if q != _VIB}
+        for p in sorted(set(pre.tolist())):
+            rows = np.flatnonzero(pre == p)
+            for v in np.unique(sp[rows]):
+                at = rows[sp[rows] == v]
+                row, _ = self._state(p, float(v))
+                for q, (c, s, *_r) in SPINDLE_QUANTITIES.items():
+                    if q != _VIB:
+                        out[q][at] = row[c] * s
+        return _Predictions(out, lambda: self._vibration_rows(sp, pre))
+
+    def _vibration_rows(self, sp: np.ndarray, pre: np.ndarray) -> np.ndarray:
+        y = np.empty(len(sp))
+        for p in sorted(set(pre.tolist())):
+            rows = np.flatnonzero(pre == p)
+            speeds = np.unique(sp[rows])
+            v = self._vibration(p, speeds)
+            y[rows] = v[np.searchsorted(speeds, sp[rows])]
+        return y
+
+    def __repr__(self) -> str:
+        return f"SpindleModelSpec({self.spindle!r}, effects={list(self.effects)})"
+
+
+class _Predictions(dict):
+    """The predictions; the vibration column is computed on first access."""
+
+    def __init__(self, values: dict, vibration: Any) -> None:
+        super().__init__(values)
+        self._vibration = vibration
+
+    def __missing__(self, key: str) -> np.ndarray:
+        if key != _VIB:
+            raise KeyError(key)
+        self[key] = self._vibration()
+        return self[key]
+
+
+class _RotorView:
+    """The spindle protocol of :mod:`thermobear.rotor` for one configuration,
+    reading the raceway offsets from the spec's cached steady states."""
+
+    def __init__(self, spec: SpindleModelSpec, preload_n: float) -> None:
+        self._spec = spec
+        self.preload_n = float(preload_n)
+        self.rotor_preset_name = spec.spindle.rotor_preset_name
+
+    def raceway_offsets(self, speed_rpm: float) -> dict:
+        return self._spec._state(self.preload_n, float(speed_rpm))[1]
+
+
+def _default_spin_friction(spindle: Spindle) -> float:
+    a = spindle.assumptions
+    if "spin_friction" in a:
+        return float(a["spin_friction"])
+    raise ConfigError(f"invalid spindle = {spindle!r}: no spin friction coefficient in assumptions")
+
+
+def _check_options(o: dict) -> None:
+    mu = o["spin_friction"]
+    if not (isinstance(mu, (int, float)) and np.isfinite(mu) and mu >= 0.0):
+        raise ConfigError(f"invalid spin_friction = {mu!r}: a finite coefficient >= 0")
+    if o["preload_kind"] not in ("rigid", "spring"):
+        raise ConfigError(f"invalid preload_kind = {o['preload_kind']!r}: 'rigid' or 'spring'")
+    k = o["spring_rate_n_per_um"]
+    if o["preload_kind"] == "spring" and not (k is not None and np.isfinite(k) and k > 0):
+        raise ConfigError(f"invalid spring_rate_n_per_um = {k!r}: a spring needs a rate > 0")
+    g = o["unbalance_grade"]
+    if not (np.isfinite(g) and g > 0):
+        raise ConfigError(f"invalid unbalance_grade = {g!r}: a grade > 0 mm/s")
+
+
+# --------------------------------------------------------------------------
+# candidates
+
+
+def _spindle_candidate_list(model: Optional[SpindleModelSpec], quantities: Sequence[str] = ()):
+    """The spindle's candidates (same :class:`thermobear.diagnosis.Candidate`
+    records as the bearing registry)."""
+
+    if model is None:
+        model = SpindleModelSpec(Spindle.preset("seed-ceramic-spindle"), effects=[])
+    base = set(model.effects)
+    opts = model.options
+    allq = tuple(SPINDLE_QUANTITIES)
+    out = _switch_candidates(base, allq)
+    out += _spin_friction_candidates(opts, allq)
+    out += _preload_candidates(opts, allq)
+    out += _unbalance_candidates(opts)
+    out += sensor_offset_candidates(quantities, SPINDLE_QUANTITIES)
+    return out
+
+
+def _switch_candidates(base: set, allq: tuple) -> list[Candidate]:
+    """``thermal_displacement`` (when two or more of its effects are off)
+    and every effect the baseline leaves off."""
+    from .. import _native
+
+    out: list[Candidate] = []
+    missing = [e for e in THERMAL_DISPLACEMENT_EFFECTS if e not in base]
+    if len(missing) > 1:
+        out.append(
+            Candidate(
+                _GROUP,
+                "switch",
+                "model",
+                f"{_GROUP}_on",
+                "1",
+                0.0,
+                1.0,
+                0.0,
+                "thermal growth of shaft, rings, balls and housing together (A-38): "
+                "seed B's coupled model",
+                allq,
+                effect=_GROUP,
+            )
+        )
+    for name, desc, *_ in _native.effects():
+        if name in base:
+            continue
+        out.append(
+            Candidate(
+                name, "switch", "model", f"{name}_on", "1", 0.0, 1.0, 0.0, desc, allq, effect=name
+            )
+        )
+    return out
+
+
+def _spin_friction_candidates(opts: dict, allq: tuple) -> list[Candidate]:
+    """The spin friction coefficient, a baseline input."""
+    out: list[Candidate] = []
+    mu = _on_grid(float(opts["spin_friction"]), *_SPIN_BOUNDS)
+    out.append(
+        Candidate(
+            "spin_friction_coefficient",
+            "parameter",
+            "model",
+            "spin_friction",
+            "1",
+            min(_SPIN_BOUNDS[0], mu),
+            max(_SPIN_BOUNDS[1], mu),
+            mu,
+            "spin friction coefficient mu_s (acts with the spin_friction effect on)",
+            allq,
+            option="spin_friction",
+            role="calibration",
+        )
+    )
+    return out
+
+
+def _preload_candidates(opts: dict, allq: tuple) -> list[Candidate]:
+    """The other preload kind (rigid <-> spring) and, for a spring, its rate."""
+    out: list[Candidate] = []
+    other = "rigid" if opts["preload_kind"] == "spring" else "spring"
+    if other == "rigid" or opts["spring_rate_n_per_um"] is not None:
+        out.append(
+            Candidate(
+                f"preload_kind:{other}",
+                "switch",
+                "model",
+                f"preload_is_{other}",
+                "1",
+                0.0,
+                1.0,
+                0.0,
+                f"preload by {'fixed position' if other == 'rigid' else 'constant-force spring'}",
+                allq,
+                option="preload_kind",
+                role="calibration",
+            )
+        )
+    if opts["preload_kind"] == "spring":
+        k = _on_grid(float(opts["spring_rate_n_per_um"]), *_SPRING_BOUNDS)
+        out.append(
+            Candidate(
+                "spring_rate_n_per_um",
+                "parameter",
+                "model",
+                "spring_rate_n_per_um",
+                "N/um",
+                min(_SPRING_BOUNDS[0], k),
+                max(_SPRING_BOUNDS[1], k),
+                k,
+                "preload spring rate (thermal growth changes the preload by rate x growth)",
+                allq,
+                option="spring_rate_n_per_um",
+                role="calibration",
+            )
+        )
+    return out
+
+
+def _unbalance_candidates(opts: dict) -> list[Candidate]:
+    """The rotor's residual unbalance grade (acts on the vibration only)."""
+    out: list[Candidate] = []
+    g = _on_grid(float(opts["unbalance_grade"]), *_UNBALANCE_BOUNDS)
+    out.append(
+        Candidate(
+            "unbalance_grade",
+            "parameter",
+            "model",
+            "unbalance_grade",
+            "mm/s",
+            min(_UNBALANCE_BOUNDS[0], g),
+            max(_UNBALANCE_BOUNDS[1], g),
+            g,
+            "residual unbalance of the rotor (ISO 21940 grade at 30,000 rpm)",
+            (_VIB,),
+            option="unbalance_grade",
+            role="calibration",
+        )
+    )
+    return out
+
+
+def _on_grid(null: float, lo: float, hi: float) -> float:
+    """The null value, snapped onto the screening grid of
+    :mod:`thermobear.diagnosis` (``linspace(lo, hi, _GRID)`` plus the null)
+    when it lies within rounding of a grid point: 0.05 and
+    ``linspace(0, 0.3, 13)[2]`` differ in the last bit, and two abscissae an
+    ulp apart make the cubic interpolant of the predictions meaningless."""
+    lo, hi = min(lo, null), max(hi, null)
+    grid = np.linspace(lo, hi, _GRID)
+    i = int(np.argmin(np.abs(grid - null)))
+    return float(grid[i]) if abs(grid[i] - null) <= 1e-9 * (hi - lo) else null
+
+
+def spindle_candidates(
+    model: Optional[SpindleModelSpec] = None, quantities: Sequence[str] = ()
+) -> "polars.DataFrame":  # noqa: F821
+    """The spindle candidate registry (columns as
+    :func:`thermobear.candidates`); without ``model`` the baseline is
+    the seed ceramic spindle with every effect off."""
+    if model is None:
+        model = SpindleModelSpec(Spindle.preset("seed-ceramic-spindle"), effects=[])
+    return _candidate_table(model, quantities)
+
+
+def load_spindle_measurements(data: Any) -> "polars.DataFrame":  # noqa: F821
+    """:func:`thermobear.load_measurements` with the spindle quantities of
+    :data:`SPINDLE_QUANTITIES` (``preload_n`` is stored as ``axial_n``)."""
+    return load_measurements(data, SPINDLE_QUANTITIES)
+
+
+def diagnose_spindle(
+    model: SpindleModelSpec,
+    measured: Any,
+    candidates: Optional[Sequence[str]] = None,
+    holdout: Union[str, float, Sequence[str], None] = "highest_speeds",
+    **options: Any,
+) -> Diagnosis:
+    """:func:`thermobear.diagnose` for a :class:`SpindleModelSpec`: the same
+    audit, fingerprints, screening, acceptance rules, verdict and gap table
+    (keyword ``options`` as there), with the spindle's quantities and
+    candidates (:func:`spindle_candidates`)."""
+    if not isinstance(model, SpindleModelSpec):
+        raise ConfigError(f"invalid model = {model!r}: give a thermobear.SpindleModelSpec")
+    return diagnose(model, measured, candidates, holdout, **options)
+
+
+def seed_b_measurements() -> "polars.DataFrame":  # noqa: F821
+    """Seed B's reported measurements (configs/seed_b_measurements.csv; the
+    sources are in the file) as a checked tidy table."""
+    import polars as pl
+
+    path = resources.files("thermobear.configs").joinpath("seed_b_measurements.csv")
+    with resources.as_file(path) as p:
+        return load_spindle_measurements(pl.read_csv(p, comment_prefix="#"))

@@ -1,0 +1,160 @@
+"""A helical gear pair: geometry, ISO 6336 and time-varying mesh stiffness,
+the default parameters."""
+
+from __future__ import annotations
+
+from typing import Any, Sequence
+
+import numpy as np
+
+from .. import _native
+
+#: Speeds at which the "speed" and "thermal" bearing stiffness is solved
+#: (linear interpolation in between, constant beyond the ends) [rpm].
+STIFFNESS_SPEEDS_RPM = np.arange(1000.0, 20000.0 + 1.0, 250.0)
+
+
+def _config_error(msg: str) -> Exception:
+    from ..errors import ConfigError
+
+    return ConfigError(msg)
+
+
+class GearPair:
+    """A helical gear pair. ``GearPair.preset("seed-electric-drive")`` is seed
+    A's first pair (Table 3, typos corrected); :meth:`from_table` takes a
+    paper-style table (E in MPa, density in t/mm^3, inertia in t mm^2) and
+    refuses typos, naming the likely intended value."""
+
+    def __init__(self, native: Any) -> None:
+        self._g = native
+
+    @classmethod
+    def preset(cls, name: str) -> "GearPair":
+        return cls(_native.GearPair.preset(name))
+
+    @staticmethod
+    def preset_names() -> list[str]:
+        return list(_native.GearPair.preset_names())
+
+    @classmethod
+    def from_table(
+        cls,
+        *,
+        pinion_teeth: int,
+        gear_teeth: int,
+        normal_module_mm: float,
+        normal_pressure_angle_deg: float,
+        helix_angle_deg: float,
+        face_width_mm: float,
+        youngs_modulus_mpa: float,
+        poisson_ratio: float,
+        density_t_per_mm3: float,
+        mass_kg: Sequence[float],
+        polar_inertia_t_mm2: Sequence[float],
+        input_torque_nm: float,
+        profile_shift_coeff: Sequence[float] = (0.0, 0.0),
+        addendum_coeff: float = 1.0,
+        dedendum_coeff: float = 1.25,
+    ) -> "GearPair":
+        return cls(
+            _native.GearPair.from_table(
+                int(pinion_teeth),
+                int(gear_teeth),
+                float(normal_module_mm),
+                float(normal_pressure_angle_deg),
+                float(helix_angle_deg),
+                float(face_width_mm),
+                float(youngs_modulus_mpa),
+                float(poisson_ratio),
+                float(density_t_per_mm3),
+                (float(mass_kg[0]), float(mass_kg[1])),
+                (float(polar_inertia_t_mm2[0]), float(polar_inertia_t_mm2[1])),
+                float(input_torque_nm),
+                (float(profile_shift_coeff[0]), float(profile_shift_coeff[1])),
+                float(addendum_coeff),
+                float(dedendum_coeff),
+            )
+        )
+
+    @property
+    def geometry(self) -> dict[str, float]:
+        """Derived geometry (mm, deg) and the contact ratios."""
+        return dict(self._g.geometry())
+
+    @property
+    def transverse_contact_ratio(self) -> float:
+        return self.geometry["transverse_contact_ratio"]
+
+    @property
+    def overlap_ratio(self) -> float:
+        return self.geometry["overlap_ratio"]
+
+    @property
+    def iso_stiffness(self) -> dict[str, float]:
+        """ISO 6336-1 Method B: c' (``single_n_per_mm_um``), c_gamma_alpha,
+        c_gamma_beta [N/(mm um)] and totals over the face width [N/m]."""
+        return dict(self._g.iso_stiffness())
+
+    def mesh_stiffness(
+        self, points: int = 64, model: str = "potential-energy"
+    ) -> "polars.DataFrame":  # noqa: F821
+        """k_m over one mesh period: ``mesh_phase``,
+        ``transverse_stiffness_n_per_m`` (along the transverse line of action,
+        comparable with ISO's c_gamma b) and ``normal_stiffness_n_per_m`` (for
+        the normal deflection of A-45, what the dynamics use)."""
+        import polars as pl
+
+        cols = self._g.mesh_stiffness(int(points), model)
+        return pl.DataFrame({k: np.asarray(v) for k, v in cols.items()})
+
+    @property
+    def typo_warnings(self) -> "polars.DataFrame":  # noqa: F821
+        """The source table's suspicious values with the likely intended ones
+        (for the preset: seed A Table 3 as printed)."""
+        import polars as pl
+
+        rows = self._g.typo_warnings()
+        return pl.DataFrame(
+            {
+                "field": [r["field"] for r in rows],
+                "given": [float(r["given"]) for r in rows],
+                "likely_intended": [float(r["likely_intended"]) for r in rows],
+                "reason": [r["reason"] for r in rows],
+            },
+            schema={
+                "field": pl.Utf8,
+                "given": pl.Float64,
+                "likely_intended": pl.Float64,
+                "reason": pl.Utf8,
+            },
+        )
+
+    def mesh_frequency_hz(self, speed_rpm: float) -> float:
+        return float(self._g.mesh_frequency_hz(float(speed_rpm)))
+
+    def __repr__(self) -> str:
+        return repr(self._g)
+
+
+def gear_defaults() -> "polars.DataFrame":  # noqa: F821
+    """The values seed A does not give, with the defaults used and why."""
+    import polars as pl
+
+    d = _native.gear_defaults()
+    rows = [
+        ("backlash_um", 2.0 * d["half_backlash_um"], "total clearance 2b; b = 50 um (not in A)"),
+        ("mesh_damping_ratio", d["mesh_damping_ratio"], "usual 0.03-0.17 range (not in A)"),
+        ("mesh_damping", None, "in-contact only (A-46 as printed); 'always' offered"),
+        ("bearing_damping_ratio", d["bearing_damping_ratio"], "on body mass (not in A)"),
+        ("te_amplitude_um", d["te_amplitude_um"], "first mesh harmonic (not in A)"),
+        ("bearings_per_shaft", d["bearings_per_shaft"], "A Fig. 1; in parallel"),
+        ("mesh_table_points", d["table_points"], "k_m and e samples per mesh period"),
+    ]
+    return pl.DataFrame(
+        {
+            "parameter": [r[0] for r in rows],
+            "value": [r[1] for r in rows],
+            "note": [r[2] for r in rows],
+        }
+    )

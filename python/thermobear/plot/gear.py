@@ -1,0 +1,69 @@
+"""Gear dynamics figures: bifurcation diagrams and regime maps."""
+
+from __future__ import annotations
+
+from typing import Any, Optional
+
+import numpy as np
+
+from .axes import get_axes
+
+
+def bifurcation(
+    pts: Any,
+    ax: Any = None,
+    *,
+    y: str = "dte_um",
+    s: float = 0.3,
+    color: Optional[str] = None,
+    label: Optional[str] = None,
+) -> Any:
+    """Bifurcation diagram: Poincare samples of ``y`` (default the dynamic
+    transmission error in um) against ``speed_rpm``, one dot per sample, from
+    :func:`thermobear.bifurcation`."""
+    ax = get_axes(ax)
+    col = y if y in pts.columns else ("dte" if "dte" in pts.columns else y)
+    ax.scatter(
+        pts["speed_rpm"].to_numpy(),
+        pts[col].to_numpy(),
+        s=s,
+        c=color or "k",
+        marker=".",
+        linewidths=0,
+        label=label,
+    )
+    ax.set_xlabel("speed [rpm]")
+    ax.set_ylabel(col.replace("_um", " [µm]").replace("_", " "))
+    ax.grid(True, alpha=0.3)
+    return ax
+
+
+_REGIME_CODES = {"period-1": 1, "period-2": 2, "period-n": 3, "quasi-periodic": 4, "chaotic": 5}
+
+
+def regime_map(
+    df: Any, ax: Any = None, *, x: str = "speed_rpm", y: str = "torque_nm", regime: str = "regime"
+) -> Any:
+    """A map of motion regimes over two parameters (e.g. input torque x
+    speed): period-1, period-2, higher period, quasi-periodic, chaotic."""
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+
+    ax = get_axes(ax)
+    xs = np.unique(df[x].to_numpy())
+    ys = np.unique(df[y].to_numpy())
+    grid = np.full((len(ys), len(xs)), np.nan)
+    xi = {v: i for i, v in enumerate(xs)}
+    yi = {v: i for i, v in enumerate(ys)}
+    for xv, yv, r in zip(df[x].to_numpy(), df[y].to_numpy(), df[regime].to_list(), strict=False):
+        code = _REGIME_CODES.get(r)
+        if code is None and isinstance(r, str) and r.startswith("period-"):
+            code = 3
+        grid[yi[yv], xi[xv]] = code if code is not None else np.nan
+    cmap = ListedColormap(["#4c72b0", "#55a868", "#c4ad66", "#8172b2", "#c44e52"])
+    norm = BoundaryNorm([0.5, 1.5, 2.5, 3.5, 4.5, 5.5], cmap.N)
+    mesh = ax.pcolormesh(xs, ys, grid, cmap=cmap, norm=norm, shading="nearest")
+    cb = ax.figure.colorbar(mesh, ax=ax, ticks=[1, 2, 3, 4, 5])
+    cb.ax.set_yticklabels(["period-1", "period-2", "period-n", "quasi-per.", "chaos"])
+    ax.set_xlabel(x.replace("_", " "))
+    ax.set_ylabel(y.replace("_", " "))
+    return ax

@@ -1,0 +1,75 @@
+"""Natural frequencies of the spindle rotor: the Campbell diagram and the
+critical speeds."""
+
+from __future__ import annotations
+
+from typing import Any, Callable, Optional, Sequence
+
+import numpy as np
+
+from .. import _native
+from .supports import _effects, _offsets, _resolve, _speeds
+
+
+def campbell(
+    spindle: Any,
+    speeds_rpm: Optional[Sequence[float]] = None,
+    modes: int = 8,
+    *,
+    coupled: bool = False,
+    effects: Optional[Sequence[str]] = None,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> "polars.DataFrame":  # noqa: F821
+    """Campbell diagram: damped natural frequencies of the lowest ``modes``
+    modes against speed, with the rows' stiffness solved at each speed.
+
+    Columns ``speed_rpm, mode, frequency_hz, damping_ratio, whirl``
+    (``forward``/``backward``/``undetermined``). Default speeds 0..30,000 rpm
+    in 31 steps. ``effects`` (names of :func:`thermobear.effects`) go to the
+    ball solver; ``"unbalanced_magnetic_pull"`` adds the UMP (off by default).
+    """
+    import polars as pl
+
+    mat, preload, _ = _resolve(spindle)
+    s = _speeds(speeds_rpm, np.linspace(0.0, 30_000.0, 31))
+    d = _native.rotor_campbell(
+        mat,
+        preload,
+        s,
+        modes=int(modes),
+        effects=_effects(effects),
+        offsets=_offsets(spindle, s, coupled),
+        progress=progress,
+    )
+    return pl.DataFrame(d)
+
+
+def critical_speeds(
+    spindle: Any,
+    speeds_rpm: Optional[Sequence[float]] = None,
+    modes: int = 8,
+    *,
+    harmonic: float = 1.0,
+    coupled: bool = False,
+    effects: Optional[Sequence[str]] = None,
+) -> "polars.DataFrame":  # noqa: F821
+    """Speeds where a Campbell branch crosses f = harmonic x speed / 60
+    (linear interpolation on the speed grid). Columns ``speed_rpm,
+    frequency_hz, branch, whirl``. Default grid 0..120,000 rpm (121
+    speeds): the seed spindle on its preloaded rows is stiff, its first
+    1X crossings lie above 60,000 rpm, far beyond its 30,000 rpm service
+    speed."""
+    import polars as pl
+
+    mat, preload, _ = _resolve(spindle)
+    s = _speeds(speeds_rpm, np.linspace(0.0, 120_000.0, 121))
+    d = _native.rotor_critical_speeds(
+        mat,
+        preload,
+        s,
+        modes=int(modes),
+        harmonic=float(harmonic),
+        effects=_effects(effects),
+        offsets=_offsets(spindle, s, coupled),
+    )
+    return pl.DataFrame(d)

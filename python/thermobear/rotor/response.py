@@ -1,0 +1,140 @@
+"""Forced response of the spindle rotor to its unbalance: vibration
+velocity and displacement against speed, the spectrum and its orders."""
+
+from __future__ import annotations
+
+from typing import Any, Callable, Optional, Sequence
+
+import numpy as np
+
+from .. import _native
+from .supports import _effects, _offsets, _resolve, _speeds
+
+
+def vibration(
+    spindle: Any,
+    speeds_rpm: Optional[Sequence[float]] = None,
+    coupled: bool = True,
+    unbalance_grade: Optional[float] = None,
+    unbalance_g_mm: Optional[float] = None,
+    method: str = "frequency",
+    *,
+    duration_s: float = 0.1,
+    effects: Optional[Sequence[str]] = None,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> "polars.DataFrame":  # noqa: F821
+    """Shaft-end (tool nose) vibration velocity against speed under a
+    residual unbalance at the rotor core: ISO 21940 grade
+    ``unbalance_grade`` [mm/s] at 30,000 rpm (default G2.5), or
+    ``unbalance_g_mm`` [g mm].
+
+    ``method="frequency"``: steady unbalance response with the linearised
+    rows (only 1X; RMS = 1X / sqrt 2). ``method="time"``: time response of
+    ``duration_s`` with the full nonlinear ball forces and the cage turning,
+    from the linear steady state; RMS, peak and 1X/2X/3X of the record.
+
+    Columns ``speed_rpm, velocity_rms_mm_s, velocity_peak_mm_s, x1_mm_s,
+    x2_mm_s, x3_mm_s, coupled, unbalance_g_mm``. ``coupled=True`` needs a
+    spindle with ``raceway_offsets`` (see the module doc); otherwise a
+    ConfigError explains that the thermal model is missing.
+    """
+    import polars as pl
+
+    mat, preload, _ = _resolve(spindle)
+    s = _speeds(speeds_rpm, np.linspace(3_000.0, 30_000.0, 10))
+    d = _native.rotor_vibration(
+        mat,
+        preload,
+        s,
+        unbalance_grade=unbalance_grade,
+        unbalance_g_mm=unbalance_g_mm,
+        method=method,
+        duration_s=float(duration_s),
+        effects=_effects(effects),
+        offsets=_offsets(spindle, s, coupled),
+        progress=progress,
+    )
+    u = d.pop("unbalance_g_mm")
+    return pl.DataFrame(d).with_columns(
+        pl.lit(bool(coupled)).alias("coupled"), pl.lit(float(u)).alias("unbalance_g_mm")
+    )
+
+
+def spectrum(
+    spindle: Any,
+    speed_rpm: float = 12_000.0,
+    duration_s: float = 0.2,
+    coupled: bool = True,
+    *,
+    nonlinear: bool = True,
+    unbalance_grade: Optional[float] = None,
+    unbalance_g_mm: Optional[float] = None,
+    effects: Optional[Sequence[str]] = None,
+) -> "polars.DataFrame":  # noqa: F821
+    """Amplitude spectrum (Hann window) of the nose velocity from a time
+    response at ``speed_rpm`` (nonlinear ball forces by default). Columns
+    ``frequency_hz, velocity_mm_s``. The 1X/2X/3X amplitudes at the exact
+    order frequencies, RMS and peak of the same record:
+    :func:`spectrum_orders`."""
+    import polars as pl
+
+    d = _spectrum_native(
+        spindle, speed_rpm, duration_s, coupled, nonlinear, unbalance_grade, unbalance_g_mm, effects
+    )
+    return pl.DataFrame({"frequency_hz": d["frequency_hz"], "velocity_mm_s": d["velocity_mm_s"]})
+
+
+def spectrum_orders(
+    spindle: Any,
+    speed_rpm: float = 12_000.0,
+    duration_s: float = 0.2,
+    coupled: bool = True,
+    *,
+    nonlinear: bool = True,
+    unbalance_grade: Optional[float] = None,
+    unbalance_g_mm: Optional[float] = None,
+    effects: Optional[Sequence[str]] = None,
+) -> "polars.DataFrame":  # noqa: F821
+    """1X, 2X, 3X of the same time response as :func:`spectrum`: columns
+    ``order, frequency_hz, velocity_mm_s`` plus ``velocity_rms_mm_s`` and
+    ``velocity_peak_mm_s`` of the record."""
+    import polars as pl
+
+    d = _spectrum_native(
+        spindle, speed_rpm, duration_s, coupled, nonlinear, unbalance_grade, unbalance_g_mm, effects
+    )
+    f1 = float(speed_rpm) / 60.0
+    return pl.DataFrame(
+        {
+            "order": [1, 2, 3],
+            "frequency_hz": [f1, 2 * f1, 3 * f1],
+            "velocity_mm_s": [d["x1_mm_s"], d["x2_mm_s"], d["x3_mm_s"]],
+            "velocity_rms_mm_s": [d["velocity_rms_mm_s"]] * 3,
+            "velocity_peak_mm_s": [d["velocity_peak_mm_s"]] * 3,
+            "unbalance_g_mm": [d["unbalance_g_mm"]] * 3,
+        }
+    )
+
+
+def _spectrum_native(
+    spindle: Any,
+    speed_rpm: float,
+    duration_s: float,
+    coupled: bool,
+    nonlinear: bool,
+    unbalance_grade: Optional[float],
+    unbalance_g_mm: Optional[float],
+    effects: Optional[Sequence[str]],
+) -> dict:
+    mat, preload, _ = _resolve(spindle)
+    return _native.rotor_spectrum(
+        mat,
+        preload,
+        float(speed_rpm),
+        duration_s=float(duration_s),
+        nonlinear=bool(nonlinear),
+        unbalance_grade=unbalance_grade,
+        unbalance_g_mm=unbalance_g_mm,
+        effects=_effects(effects),
+        offsets=_offsets(spindle, np.array([float(speed_rpm)]), coupled),
+    )

@@ -1,0 +1,124 @@
+"""Running a spindle: warm-up transients, preload grids, the optimal and the
+compensating preload against speed."""
+
+from __future__ import annotations
+
+from typing import Any, Callable, Optional, Sequence
+
+import numpy as np
+
+from .spindle import SEED_B_SPRING_RATE_N_PER_UM, Spindle, _check
+
+
+def transient(
+    spindle: Spindle,
+    *,
+    speed_rpm: float,
+    duration_s: float,
+    dt_s: float = 5.0,
+    record_every: int = 1,
+    initial_c: Optional[float] = None,
+    mechanics_update_k: float = 0.05,
+) -> Any:
+    """Temperatures in time from a uniform start (default: ambient) at
+    constant speed: ``time_s`` and one ``<node>_c`` column per node. The
+    bearing heat follows the temperatures (quasi-steady mechanics, re-solved
+    when a node moved more than ``mechanics_update_k``)."""
+    import polars as pl
+
+    sp = _check(spindle)
+    d = sp._native.transient(
+        float(speed_rpm),
+        float(duration_s),
+        dt_s=float(dt_s),
+        record_every=int(record_every),
+        initial_c=initial_c,
+        mechanics_update_k=float(mechanics_update_k),
+    )
+    t = np.asarray(d["temperatures_c"])
+    cols: dict[str, Any] = {"time_s": np.asarray(d["time_s"])}
+    for i, name in enumerate(d["node_names"]):
+        cols[f"{name}_c"] = t[:, i]
+    return pl.DataFrame(cols)
+
+
+def spindle_grid(
+    spindle: Spindle,
+    *,
+    speeds_rpm: Sequence[float],
+    preloads_n: Sequence[float],
+    radial_loads_n: Optional[Sequence[float]] = None,
+    progress: Optional[Callable[[int, int], Any]] = None,
+) -> Any:
+    """Speed x preload x load grid of coupled steady states (threads, GIL
+    released): temperatures, operating preload, heat, radial displacements
+    (mechanical, thermal, total) and radial stiffness with and without
+    thermal effects."""
+    import polars as pl
+
+    sp = _check(spindle)
+    loads = [sp.radial_load_n] if radial_loads_n is None else list(radial_loads_n)
+    d = sp._native.grid(
+        [float(v) for v in speeds_rpm],
+        [float(v) for v in preloads_n],
+        [float(v) for v in loads],
+        progress,
+    )
+    return pl.DataFrame({k: np.asarray(v) for k, v in d.items()})
+
+
+def optimal_preload(
+    spindle: Spindle,
+    *,
+    speeds_rpm: Sequence[float],
+    preloads_n: Sequence[float],
+    radial_n: Optional[float] = None,
+    progress: Optional[Callable[[int, int], Any]] = None,
+) -> Any:
+    """Preload with the least total radial displacement (mechanical under the
+    working radial load, cold geometry at speed, plus the radial thermal
+    displacement; seed B Figs. 15-16) at each speed: ``speed_rpm``,
+    ``optimal_preload_n``, ``min_radial_displacement_um`` and the parts."""
+    import polars as pl
+
+    sp = _check(spindle)
+    if radial_n is not None:
+        sp = sp.with_options(radial_load_n=radial_n)
+    grid = spindle_grid(sp, speeds_rpm=speeds_rpm, preloads_n=preloads_n, progress=progress)
+    best = (
+        grid.sort(["speed_rpm", "total_radial_displacement_um", "preload_n"])
+        .group_by("speed_rpm", maintain_order=True)
+        .first()
+    )
+    return best.select(
+        pl.col("speed_rpm"),
+        pl.col("preload_n").alias("optimal_preload_n"),
+        pl.col("total_radial_displacement_um").alias("min_radial_displacement_um"),
+        pl.col("mechanical_radial_displacement_um"),
+        pl.col("thermal_radial_displacement_um"),
+        pl.col("front_balls_c"),
+        pl.col("radial_load_n"),
+    )
+
+
+def compensation_preload(
+    spindle: Spindle,
+    *,
+    speeds_rpm: Sequence[float],
+    spring_rate_n_per_um: float = SEED_B_SPRING_RATE_N_PER_UM,
+    progress: Optional[Callable[[int, int], Any]] = None,
+) -> Any:
+    """Seed B Fig. 17: with a spring preload the spindle's axial thermal
+    growth compresses the spring, dF = k_s u_axial. Columns ``speed_rpm``,
+    ``axial_growth_um``, ``compensation_preload_n`` (k_s u),
+    ``solved_preload_change_n`` (coupled solve, spring in series with the
+    bearings), ``spring_rate_n_per_um``. With the effect
+    ``preload_change_from_axial_growth`` off both preload columns are ~0."""
+    import polars as pl
+
+    sp = _check(spindle)
+    d = sp._native.compensation(
+        [float(v) for v in speeds_rpm], float(spring_rate_n_per_um), progress
+    )
+    df = pl.DataFrame({k: np.asarray(v) for k, v in d.items()})
+    return df.with_columns(pl.lit(float(spring_rate_n_per_um)).alias("spring_rate_n_per_um"))

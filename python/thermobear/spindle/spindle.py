@@ -1,0 +1,219 @@
+"""The :class:`Spindle`: its presets, options, assumptions and coupled
+thermal steady state; the table rows of a solved state."""
+
+from __future__ import annotations
+
+from typing import Any, Optional, Sequence
+
+import numpy as np
+
+from .. import _native
+
+#: Spring rate implied by seed B Fig. 17: 6.45 N / 17.92 um.
+SEED_B_SPRING_RATE_N_PER_UM = 6.45 / 17.92
+
+
+class Spindle:
+    """A motorized spindle. Build with :meth:`preset`, change settings with
+    :meth:`with_options` (returns a new spindle)."""
+
+    def __init__(self, native: Any) -> None:
+        self._native = native
+
+    @staticmethod
+    def preset(name: str) -> "Spindle":
+        """``seed-ceramic-spindle`` (hybrid), ``seed-steel-spindle``,
+        ``seed-full-ceramic-spindle``."""
+        return Spindle(_native.Spindle.preset(name))
+
+    @staticmethod
+    def preset_names() -> list[str]:
+        return list(_native.Spindle.preset_names())
+
+    def with_options(
+        self,
+        *,
+        preload_n: Optional[float] = None,
+        preload_kind: Optional[str] = None,
+        spring_rate_n_per_um: Optional[float] = None,
+        radial_load_n: Optional[float] = None,
+        effects: Optional[Sequence[str]] = None,
+        spin_friction: Optional[float] = None,
+    ) -> "Spindle":
+        """A copy with other settings; ``preload_kind`` is ``"rigid"`` or
+        ``"spring"`` (a spring keeps ``spring_rate_n_per_um``, default seed
+        B's 0.36 N/um)."""
+        return Spindle(
+            self._native.with_options(
+                preload_n=preload_n,
+                preload_kind=preload_kind,
+                spring_rate_n_per_um=spring_rate_n_per_um,
+                radial_load_n=radial_load_n,
+                effects=list(effects) if effects is not None else None,
+                spin_friction=spin_friction,
+            )
+        )
+
+    @property
+    def name(self) -> str:
+        return self._native.name
+
+    @property
+    def preload_n(self) -> float:
+        return self._native.preload_n
+
+    @property
+    def preload_kind(self) -> str:
+        return self._native.preload_kind
+
+    @property
+    def spring_rate_n_per_um(self) -> Optional[float]:
+        return self._native.spring_rate_n_per_um
+
+    @property
+    def radial_load_n(self) -> float:
+        return self._native.radial_load_n
+
+    @property
+    def node_names(self) -> list[str]:
+        return list(self._native.node_names)
+
+    @property
+    def assumptions(self) -> dict[str, Any]:
+        """Every assumed number and modelling choice."""
+        return dict(self._native.assumptions())
+
+    def __repr__(self) -> str:
+        return (
+            f"Spindle({self.name!r}, preload {self.preload_n:g} N {self.preload_kind}, "
+            f"radial load {self.radial_load_n:g} N)"
+        )
+
+    def thermal_state(
+        self,
+        speed_rpm: float,
+        preload_n: Optional[float] = None,
+        radial_n: Optional[float] = None,
+        preload_kind: Optional[str] = None,
+        effects: Optional[Sequence[str]] = None,
+        axial_n: Optional[float] = None,
+        **unused: Any,
+    ) -> Any:
+        """Coupled steady state at one speed as a one-row DataFrame: node
+        temperatures (``<node>_c``), heat, preload, axial growth, radial
+        thermal displacement, front-bearing contact angles and loads,
+        radial stiffness, the radial load each pair carries
+        (``<pair>_pair_radial_x_n``: nose load side, ``_y_n``: the static
+        unbalanced magnetic pull ``magnetic_pull_n``, which acts with the
+        ``unbalanced_magnetic_pull`` effect on), convergence report."""
+        import polars as pl
+
+        from ..errors import ConfigError
+
+        if axial_n not in (None, 0.0):
+            raise ConfigError(
+                f"invalid axial_n = {axial_n}: a spindle's axial load is its preload; "
+                "give preload_n"
+            )
+        if unused:
+            raise ConfigError(
+                f"invalid argument = {sorted(unused)[0]}: a spindle takes speed_rpm, "
+                "preload_n, radial_n, preload_kind, effects"
+            )
+        sp = self
+        if any(v is not None for v in (preload_n, radial_n, preload_kind, effects)):
+            sp = self.with_options(
+                preload_n=preload_n,
+                radial_load_n=radial_n,
+                preload_kind=preload_kind,
+                effects=effects,
+            )
+        d = sp._native.steady_state(float(speed_rpm))
+        return pl.DataFrame([_state_row(d, sp)])
+
+    _thermal_state = thermal_state
+
+    # -- the seam to the rotor model (thermobear.rotor) ---------------------
+    @property
+    def rotor_preset_name(self) -> str:
+        """The rotor model of this spindle for :func:`thermobear.campbell`,
+        :func:`thermobear.vibration` and :func:`thermobear.spectrum`."""
+        from ..errors import ConfigError
+
+        name = self.name
+        if name not in ("seed-ceramic-spindle", "seed-steel-spindle"):
+            raise ConfigError(
+                f"invalid spindle = {name!r}: the rotor model has hybrid and steel rows only"
+            )
+        return name
+
+    def raceway_offsets(self, speed_rpm: float) -> dict[str, tuple[float, float]]:
+        """Thermal groove-centre offsets ``(radial_m, axial_m)`` of the front
+        and rear rows at the coupled steady state of ``speed_rpm`` (the values
+        the coupled bearing solve uses, A-38). Makes ``coupled=True`` work in
+        the rotor functions."""
+        d = self._native.steady_state(float(speed_rpm))
+        front = tuple(float(v) for v in d["front_raceway_offsets_m"])
+        rear = tuple(float(v) for v in d["rear_raceway_offsets_m"])
+        return {"front": front, "rear": rear}
+
+    def isothermal(self, speed_rpm: float) -> Any:
+        """Front pair without thermal effects at speed (one-row DataFrame)."""
+        import polars as pl
+
+        front, _ = self._native.isothermal(float(speed_rpm))
+        row = {"speed_rpm": float(speed_rpm)}
+        row.update(_pair_row(front))
+        return pl.DataFrame([row])
+
+
+def _pair_row(p: dict) -> dict:
+    k = np.asarray(p["stiffness_matrix"])
+    return {
+        "operating_preload_n": p["preload_n"],
+        "spring_compression_um": p["spring_compression_m"] * 1e6,
+        "radial_displacement_um": float(np.asarray(p["displacement"])[0]) * 1e6,
+        "inner_contact_angle_deg": float(np.mean(p["inner_contact_angle_deg"])),
+        "outer_contact_angle_deg": float(np.mean(p["outer_contact_angle_deg"])),
+        "inner_load_max_n": float(np.max(p["inner_load_n"])),
+        "outer_load_max_n": float(np.max(p["outer_load_n"])),
+        "radial_stiffness_n_per_m": float(k[0, 0]),
+        "axial_stiffness_n_per_m": float(k[2, 2]),
+    }
+
+
+def _state_row(d: dict, sp: Spindle) -> dict:
+    row: dict[str, Any] = {
+        "speed_rpm": d["speed_rpm"],
+        "preload_n": sp.preload_n,
+        "preload_kind": sp.preload_kind,
+    }
+    for name, t in zip(d["node_names"], d["temperatures_c"], strict=False):
+        row[f"{name}_c"] = t
+    row.update(_pair_row(d["front"]))
+    row["rear_operating_preload_n"] = d["rear"]["preload_n"]
+    row["front_bearing_heat_w"] = d["bearing_heat_w"][0]
+    row["front_spin_heat_w"] = d["spin_heat_w"][0]
+    row["bearing_heat_w"] = float(sum(d["bearing_heat_w"]))
+    row["motor_losses_w"] = d["motor_losses_w"]
+    row["magnetic_pull_n"] = d["magnetic_pull_n"]
+    for pair in ("front", "rear"):
+        fx, fy = d[pair]["radial_load_n"]
+        row[f"{pair}_pair_radial_x_n"] = fx
+        row[f"{pair}_pair_radial_y_n"] = fy
+    row["total_heat_w"] = d["total_heat_w"]
+    row["boundary_flow_w"] = d["boundary_flow_w"]
+    row["axial_growth_um"] = d["axial_growth_m"] * 1e6
+    row["radial_thermal_displacement_um"] = d["front_radial_thermal_displacement_m"] * 1e6
+    row["ball_growth_um"] = d["front_ball_growth_m"] * 1e6
+    row["iterations"] = d["iterations"]
+    row["temperature_change_k"] = d["temperature_change_k"]
+    return row
+
+
+def _check(spindle: Any) -> Spindle:
+    from ..errors import ConfigError
+
+    if not isinstance(spindle, Spindle):
+        raise ConfigError(f"invalid spindle = {type(spindle).__name__}: need a thermobear.Spindle")
+    return spindle

@@ -1,0 +1,15 @@
+"""Bearing heat, the seed A thermal network and the coupled
+thermo-mechanical state; stiffness against speed under the constant, speed
+and thermal models (crate: ``src/thermal``, bindings
+``src/python/thermal.rs``)."""
+
+from .state import THERMAL_EFFECTS, ThermalState, thermal_state
+from .stiffness import stiffness_curve, thermal_stiffness_curve
+
+__all__ = [
+    "THERMAL_EFFECTS",
+    "ThermalState",
+    "stiffness_curve",
+    "thermal_state",
+    "thermal_stiffness_curve",
+]

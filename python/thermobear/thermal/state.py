@@ -1,0 +1,251 @@
+"""Bearing heat, the thermal network and the coupled thermo-mechanical state.
+
+:func:`thermal_state` solves the fixed point heat -> temperatures ->
+thermal expansion -> raceway geometry -> contact loads -> heat for one
+bearing in the seed A thermal network (Fig. 7). Objects with a
+``_thermal_state(**kwargs)`` method (e.g. a spindle) are dispatched to it.
+
+Effects (see :func:`thermobear.effects`): ``thermal_expansion_shaft``,
+``_inner_ring``, ``_outer_ring``, ``_balls``, ``_housing``,
+``temperature_dependent_viscosity`` and ``spin_friction`` switch the
+thermal terms; ``centrifugal_force``, ``gyroscopic_moment`` and
+``ring_centrifugal_expansion`` the high-speed terms. Default: all on.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Optional, Sequence
+
+import numpy as np
+
+from .. import _native
+from ..bearing.ball_bearing import Bearing, BearingSolution, _effects_arg
+from ..bearing.material import _native_material
+
+#: Effects that make the coupled model differ from the isothermal one.
+THERMAL_EFFECTS = (
+    "thermal_expansion_shaft",
+    "thermal_expansion_inner_ring",
+    "thermal_expansion_outer_ring",
+    "thermal_expansion_balls",
+    "thermal_expansion_housing",
+)
+
+
+@dataclass(frozen=True)
+class ThermalState:
+    """Coupled steady state of one bearing; SI inside ``raw``."""
+
+    raw: dict
+
+    @property
+    def temperatures(self) -> "polars.DataFrame":  # noqa: F821
+        """Node temperatures: ``node``, ``temperature_c`` (boundaries included)."""
+        import polars as pl
+
+        return pl.DataFrame(
+            {"node": list(self.raw["node"]), "temperature_c": np.asarray(self.raw["temperature_c"])}
+        )
+
+    def temperature_c(self, node: str) -> float:
+        """Temperature of one node (``Ts``, ``Tci``, ``Ti``, ``Tb``, ``To``,
+        ``Tco``, ``Th``, ``Tog``, ``Ta``)."""
+        from ..errors import ConfigError
+
+        names = list(self.raw["node"])
+        if node not in names:
+            raise ConfigError(f"invalid node = {node!r}: known: {', '.join(names)}")
+        return float(np.asarray(self.raw["temperature_c"])[names.index(node)])
+
+    @property
+    def heat(self) -> "polars.DataFrame":  # noqa: F821
+        """Heat by mechanism: ``source`` (load, viscous, inner_spin,
+        outer_spin, extra, churning), ``heat_w``."""
+        import polars as pl
+
+        return pl.DataFrame(
+            {"source": list(self.raw["source"]), "heat_w": np.asarray(self.raw["heat_w"])}
+        )
+
+    @property
+    def heat_split(self) -> "polars.DataFrame":  # noqa: F821
+        """Heat by part (Burton-Staph, A-27): ``part``, ``heat_w``."""
+        import polars as pl
+
+        return pl.DataFrame(
+            {"part": list(self.raw["part"]), "heat_w": np.asarray(self.raw["part_heat_w"])}
+        )
+
+    @property
+    def boundary_flows(self) -> "polars.DataFrame":  # noqa: F821
+        """Heat leaving through each fixed-temperature node: ``boundary``, ``heat_w``."""
+        import polars as pl
+
+        return pl.DataFrame(
+            {
+                "boundary": list(self.raw["boundary"]),
+                "heat_w": np.asarray(self.raw["boundary_flow_w"]),
+            }
+        )
+
+    @property
+    def total_heat_w(self) -> float:
+        return float(self.raw["total_heat_w"])
+
+    @property
+    def churning_w(self) -> float:
+        """Ball drag ("churning") heat in the oil-air mixture [W] (0 unless
+        ``churning_oil_fraction`` > 0)."""
+        return float(self.raw["churning_w"])
+
+    @property
+    def deformations(self) -> dict[str, float]:
+        """Thermal offsets fed to the bearing (``radial_thermal_offset_um``,
+        ``axial_thermal_offset_um``: A-38 with the ball growth projected on
+        the free contact line), per-part growths, the centrifugal ring
+        expansion and the ring displacements under load, all in um."""
+        return {k: float(v) for k, v in self.raw["deformations"].items()}
+
+    @property
+    def solution(self) -> BearingSolution:
+        return BearingSolution(self.raw["solution"])
+
+    @property
+    def iterations(self) -> int:
+        return int(self.raw["iterations"])
+
+    @property
+    def residual(self) -> float:
+        """Last largest node temperature change of the fixed point [K]."""
+        return float(self.raw["residual_k"])
+
+    @property
+    def oil_temperature_c(self) -> float:
+        return float(self.raw["oil_temperature_c"])
+
+    @property
+    def viscosity_cst(self) -> float:
+        return float(self.raw["viscosity_cst"])
+
+    def __repr__(self) -> str:
+        t = dict(zip(self.raw["node"], np.asarray(self.raw["temperature_c"]), strict=False))
+        return (
+            f"ThermalState(heat={self.total_heat_w:.1f} W, Ti={t['Ti']:.1f} C, Tb={t['Tb']:.1f} C, "
+            f"To={t['To']:.1f} C, iterations={self.iterations})"
+        )
+
+
+def _model_kwargs(
+    lubricant: str,
+    lubrication_factor_f0: float,
+    spin_friction: float,
+    oil_air_temperature_c: float,
+    ambient_temperature_c: float,
+    housing_material: Any,
+    raceway_control: str,
+    misalignment_rad: Optional[float],
+    extra_heat_w: float = 0.0,
+    housing_conductance_scale: float = 1.0,
+    churning_oil_fraction: float = 0.0,
+) -> dict:
+    return {
+        "lubricant": str(lubricant),
+        "lubrication_factor_f0": float(lubrication_factor_f0),
+        "spin_friction": float(spin_friction),
+        "oil_air_temperature_c": float(oil_air_temperature_c),
+        "ambient_temperature_c": float(ambient_temperature_c),
+        "housing_material": _native_material(housing_material),
+        "raceway_control": str(raceway_control),
+        "misalignment_rad": None if misalignment_rad is None else float(misalignment_rad),
+        "extra_heat_w": float(extra_heat_w),
+        "housing_conductance_scale": float(housing_conductance_scale),
+        "churning_oil_fraction": float(churning_oil_fraction),
+    }
+
+
+def thermal_state(
+    bearing: Any,
+    speed_rpm: float,
+    axial_n: Optional[float] = None,
+    radial_n: Optional[float] = None,
+    *,
+    effects: Optional[Sequence[str]] = None,
+    lubricant: str = "e-drive ATF",
+    lubrication_factor_f0: float = 1.0,
+    spin_friction: float = 0.06,
+    oil_air_temperature_c: float = 28.0,
+    ambient_temperature_c: float = 26.0,
+    housing_material: Any = "aluminium",
+    raceway_control: str = "outer",
+    misalignment_rad: Optional[float] = 0.0,
+    extra_heat_w: float = 0.0,
+    housing_conductance_scale: float = 1.0,
+    churning_oil_fraction: float = 0.0,
+    **kwargs: Any,
+) -> Any:
+    """Coupled thermal steady state at ``speed_rpm`` under ``axial_n``
+    (preload included) and ``radial_n``.
+
+    For a :class:`~thermobear.Bearing`: the seed A network (oil-air
+    ``oil_air_temperature_c``, ambient ``ambient_temperature_c``, housing
+    of ``housing_material``, ``lubricant`` preset: "ISO VG 32", "ISO VG 68",
+    "e-drive ATF"), Palmgren friction with ``lubrication_factor_f0`` and
+    spin friction coefficient ``spin_friction``. Calibration inputs:
+    ``extra_heat_w`` (W, >= 0; heat at the bearing beyond the modelled
+    friction, e.g. from a magnetic pull load, split like rolling heat
+    1/4 : 1/2 : 1/4 to inner ring, balls, outer ring) and
+    ``housing_conductance_scale`` (> 0, default 1; scales the housing-to-
+    ambient convection link) and ``churning_oil_fraction`` (the oil volume
+    fraction X of the oil-air mixture in the bearing cavity: dimensionless,
+    0..1, default 0 = off; adds the ball drag heat
+    Z (pi/64) C_D X rho_oil D^2 dm^3 omega_c^3, C_D = 0.47, at the solved
+    cage speed omega_c, which grows like speed^3; split like rolling heat;
+    reported as ``churning_w`` and the ``churning`` row of
+    :attr:`ThermalState.heat`). The defaults reproduce the baseline. Returns a
+    :class:`ThermalState`. Raises ``ThermalRunawayError`` when a node passes
+    the lubricant's highest temperature or heat, temperatures and contact
+    loads grow together, ``ConvergenceError`` when the fixed point stalls.
+
+    Any object with a ``_thermal_state(**kwargs)`` method (a
+    :class:`~thermobear.Spindle`) is dispatched to it with ``speed_rpm``, the
+    loads and ``effects`` that were given, and the remaining keyword
+    arguments (for a spindle: ``preload_n``, ``preload_kind``)."""
+    if hasattr(bearing, "_thermal_state") and not isinstance(bearing, Bearing):
+        given = {"axial_n": axial_n, "radial_n": radial_n, "effects": effects}
+        given = {k: v for k, v in given.items() if v is not None}
+        return bearing._thermal_state(speed_rpm=speed_rpm, **given, **kwargs)
+    _check_bearing_call(bearing, kwargs)
+    options = _model_kwargs(
+        lubricant,
+        lubrication_factor_f0,
+        spin_friction,
+        oil_air_temperature_c,
+        ambient_temperature_c,
+        housing_material,
+        raceway_control,
+        misalignment_rad,
+        extra_heat_w,
+        housing_conductance_scale,
+        churning_oil_fraction,
+    )
+    loads = (
+        float(0.0 if axial_n is None else axial_n),
+        float(0.0 if radial_n is None else radial_n),
+    )
+    raw = _native.thermal_state(
+        bearing._b, float(speed_rpm), *loads, _effects_arg(effects), **options
+    )
+    return ThermalState(raw)
+
+
+def _check_bearing_call(bearing: Any, kwargs: dict) -> None:
+    """A :class:`~thermobear.Bearing` and no option beyond the bearing's."""
+    from ..errors import ConfigError
+
+    if kwargs:
+        raise ConfigError(
+            f"invalid argument = {sorted(kwargs)[0]!r}: not a thermal_state option for a Bearing"
+        )
+    if not isinstance(bearing, Bearing):
+        raise ConfigError(f"invalid bearing = {bearing!r}: give a thermobear.Bearing")
