@@ -1,4 +1,4 @@
-"""Figures of a :class:`~thermobear.diagnose.Diagnosis`: measured against
+"""Figures of a :class:`~thermobear.Diagnosis`: measured against
 the model before and after the accepted effects, and the residual in sigma
 against speed. Every function takes ``ax=None`` and returns the Axes."""
 
