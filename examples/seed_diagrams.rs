@@ -29,9 +29,14 @@ fn summary(r: &SweepResult) -> String {
             imp += 1;
         }
     }
+    let to_chaos = r.transitions.iter().filter(|t| t.enters_chaos()).count();
+    let from_chaos = r.transitions.iter().filter(|t| t.exits_chaos()).count();
     format!(
-        "{:?}: P1 {per1}, Pn {pern}, QP {qp}, chaos {ch}, impacting {imp}, jumps {:?}",
-        r.direction, r.jumps
+        "{:?}: P1 {per1}, Pn {pern}, QP {qp}, chaos {ch}, impacting {imp}, jumps {:?}, \
+         chaos entries {to_chaos} / exits {from_chaos}, unsettled {}",
+        r.direction,
+        r.jumps,
+        r.unsettled.len()
     )
 }
 
@@ -139,7 +144,7 @@ fn main() -> thermobear::Result<()> {
             cells.len(),
             t0.elapsed().as_secs_f64()
         );
-        println!("  1 = P1 no impact, * = P1 impacting, 2-9 = period-n, n = period 10-16, q = quasi-periodic, c = chaos; upper case = double-sided");
+        println!("  1 = P1 no impact, * = P1 impacting, 2-9 = period-n, n = period 10-32, q = quasi-periodic, c = chaos; upper case = double-sided");
         print_map(&cells, map_speeds.len());
     }
     Ok(())

@@ -17,9 +17,12 @@
 //! `Error::Interrupted`.
 
 use super::batch::{poincare_sample_batch, HelicalBatch, LANES};
-use super::classify::{classify_motion, detect_jumps, impact_regime, ClassifyConfig, ImpactRegime, Motion};
+use super::classify::{
+    chaos_verdict, impact_regime, jumps_and_transitions, section_verdict, zero_one_test, ChaosEvidence, ClassifyConfig,
+    ImpactRegime, Motion, Transition, MIN_ZERO_ONE_POINTS,
+};
 use super::gear_model::{BacklashOscillator, BacklashOscillatorSystem, HelicalPair, HelicalPairSystem};
-use super::lyapunov::{largest_lyapunov_benettin, LyapunovConfig};
+use super::lyapunov::{largest_lyapunov_blocks, LyapunovBlocks};
 use super::ode::GridOde;
 use super::poincare::{poincare_sample, PoincareRecord};
 use crate::error::positive;
@@ -46,6 +49,13 @@ pub trait SweepModel<const N: usize>: Sync {
     fn half_backlash(&self) -> f64;
     /// Static (start) state at `speed`.
     fn initial_state(&self, speed: f64) -> Result<[f64; N]>;
+
+    /// Observed Poincare quantities of a section point `x` (state at step 0),
+    /// in the unit of [`SweepModel::deflection`]: the only quantities the
+    /// period test compares. Default: the deflection alone.
+    fn section_outputs(&self, sys: &Self::System, x: &[f64; N]) -> Vec<f64> {
+        vec![self.deflection(sys, 0, x)]
+    }
 
     /// Poincare records of several `(model, speed, start)` runs with the
     /// deflection as observable. The default runs them one by one; models
@@ -98,11 +108,26 @@ pub struct SweepConfig {
     pub jump_rel: f64,
     /// Jump threshold relative to the median local step.
     pub jump_trend_factor: f64,
+    /// Cap on the adaptive transient \[mesh periods\]: while the section
+    /// points are still converging the transient is extended by
+    /// `recorded_periods` at a time, up to this total; points still
+    /// converging at the cap are reported unsettled. A cap at or below
+    /// `transient_periods` disables the extension.
+    pub max_transient_periods: usize,
+    /// Most periods of the Lyapunov estimate \[mesh periods\]: it runs at
+    /// least `lyapunov_periods` and is extended block by block while its
+    /// sign against the threshold is within its error.
+    pub lyapunov_max_periods: usize,
+    /// Periods per block of the Lyapunov estimate (the batch-means unit of
+    /// its standard error) \[mesh periods\].
+    pub lyapunov_block_periods: usize,
 }
 
 impl Default for SweepConfig {
     /// The seed diagram settings: 300 transient + 100 recorded periods, 64
-    /// steps per period; 100-period Lyapunov check of non-periodic speeds.
+    /// steps per period, transient extended up to 1500 periods while the
+    /// section is converging; Lyapunov check of non-periodic speeds over
+    /// 100 periods (blocks of 10), extended up to 400 while undecided.
     fn default() -> Self {
         SweepConfig {
             transient_periods: 300,
@@ -112,6 +137,9 @@ impl Default for SweepConfig {
             classify: ClassifyConfig::default(),
             jump_rel: 0.2,
             jump_trend_factor: 5.0,
+            max_transient_periods: 1500,
+            lyapunov_max_periods: 400,
+            lyapunov_block_periods: 10,
         }
     }
 }
@@ -133,6 +161,15 @@ pub struct SpeedPoint {
     pub impact: ImpactRegime,
     /// Largest Lyapunov exponent per mesh period, when computed.
     pub lyapunov_per_period: Option<f64>,
+    /// Standard error of `lyapunov_per_period` (batch means) \[1/period\].
+    pub lyapunov_stderr_per_period: Option<f64>,
+    /// 0-1 test K of the section deflection, when computed \[-\].
+    pub zero_one_k: Option<f64>,
+    /// Transient actually run before the recorded window \[mesh periods\].
+    pub transient_periods: usize,
+    /// False when the section points were still converging at the
+    /// transient cap (the label is then provisional).
+    pub settled: bool,
 }
 
 impl SpeedPoint {
@@ -149,8 +186,15 @@ pub struct SweepResult {
     pub direction: SweepDirection,
     /// One point per speed, ascending speed.
     pub points: Vec<SpeedPoint>,
-    /// Indices i with a jump between points i and i+1.
+    /// Indices i with a jump between points i and i+1 (same non-chaotic
+    /// regime family on both sides).
     pub jumps: Vec<usize>,
+    /// Changes of regime family between neighbouring points (entries into
+    /// and exits from chaos among them), with their size.
+    pub transitions: Vec<Transition>,
+    /// Indices of the points whose section did not settle within
+    /// `max_transient_periods`.
+    pub unsettled: Vec<usize>,
 }
 
 fn check_config(cfg: &SweepConfig) -> Result<()> {
@@ -164,6 +208,9 @@ fn check_config(cfg: &SweepConfig) -> Result<()> {
     cfg.classify.check()?;
     positive("jump_rel", cfg.jump_rel)?;
     positive("jump_trend_factor", cfg.jump_trend_factor)?;
+    if cfg.lyapunov_block_periods == 0 {
+        return Err(Error::config("lyapunov_block_periods", 0, "must be at least 1"));
+    }
     Ok(())
 }
 
@@ -193,47 +240,101 @@ pub fn record_speed<const N: usize, M: SweepModel<N>>(
     })
 }
 
-/// Classify a recorded speed (computing a Lyapunov exponent from the final
-/// state if the section is not periodic and `cfg.lyapunov_periods > 0`).
+/// Classify a recorded speed (see [`settle_and_finish`]).
 pub fn finish_point<const N: usize, M: SweepModel<N>>(
     model: &M,
     speed: f64,
     rec: PoincareRecord<N>,
     cfg: &SweepConfig,
 ) -> Result<SpeedPoint> {
-    let periodic = super::classify::detect_period(
-        &rec.points,
-        &rec.state_range,
-        cfg.classify.rel_tol,
-        cfg.classify.max_period,
-    );
-    let lyapunov = if periodic.is_none() && cfg.lyapunov_periods > 0 {
-        let sys = model.system_at(speed, cfg.steps_per_period)?;
-        let scale = rec.state_range.map(|s| if s > 0.0 { s } else { 1.0 });
-        let lcfg = LyapunovConfig {
-            transient_steps: 0,
-            measure_steps: cfg.lyapunov_periods * cfg.steps_per_period,
-            renorm_steps: cfg.steps_per_period,
-            separation: 1e-6,
-        };
-        let (l, _) = largest_lyapunov_benettin(&sys, &rec.final_state, 0, &scale, &lcfg)?;
-        Some(l * sys.step() * cfg.steps_per_period as f64)
-    } else {
-        None
+    Ok(settle_and_finish(model, speed, rec, cfg)?.0)
+}
+
+/// Settle and classify a recorded speed; returns the point and the final
+/// state (the start of the next speed in a continuation sweep).
+///
+/// 1. Period test and settling test on the observed section quantities
+///    ([`SweepModel::section_outputs`]) against the orbit size (peak-to-peak
+///    deflection of the window). While the points are still converging and
+///    the cap `max_transient_periods` allows, the window becomes transient
+///    and a new window of `recorded_periods` is run (scalar RK4, bitwise
+///    equal to the lock-step batches).
+/// 2. Non-periodic points: the largest Lyapunov exponent from the final
+///    state with its standard error (blocks of `lyapunov_block_periods`,
+///    at least `lyapunov_periods`, extended up to `lyapunov_max_periods`
+///    while undecided), and the 0-1 test on the section deflection of the
+///    window and the Lyapunov run; [`chaos_verdict`] decides.
+pub fn settle_and_finish<const N: usize, M: SweepModel<N>>(
+    model: &M,
+    speed: f64,
+    rec: PoincareRecord<N>,
+    cfg: &SweepConfig,
+) -> Result<(SpeedPoint, [f64; N])> {
+    let sys = model.system_at(speed, cfg.steps_per_period)?;
+    let mut rec = rec;
+    let mut transient = cfg.transient_periods;
+    let (verdict, settled) = loop {
+        let outs: Vec<Vec<f64>> = rec.points.iter().map(|x| model.section_outputs(&sys, x)).collect();
+        let v = section_verdict(&outs, rec.observable_max - rec.observable_min, &cfg.classify);
+        if !v.converging {
+            break (v, true);
+        }
+        if transient + cfg.recorded_periods > cfg.max_transient_periods {
+            break (v, false);
+        }
+        transient += cfg.recorded_periods;
+        rec = poincare_sample(&sys, &rec.final_state, 0, cfg.recorded_periods, |n, x| {
+            model.deflection(&sys, n, x)
+        })?;
     };
-    let motion = match periodic {
+    let mut ev = ChaosEvidence::default();
+    let motion = match verdict.period {
         Some(n) => Motion::Periodic(n),
-        None => classify_motion(&rec.points, &rec.state_range, &rec.observable, lyapunov, &cfg.classify),
+        None => {
+            let mut series = rec.observable.clone();
+            if cfg.lyapunov_periods > 0 {
+                let period = sys.step() * cfg.steps_per_period as f64;
+                let block = cfg.lyapunov_block_periods.min((cfg.lyapunov_periods / 2).max(1));
+                let min_blocks = (cfg.lyapunov_periods / block).max(2);
+                let lcfg = LyapunovBlocks {
+                    renorm_steps: cfg.steps_per_period,
+                    renorms_per_block: block,
+                    min_blocks,
+                    max_blocks: (cfg.lyapunov_max_periods / block).max(min_blocks),
+                    separation: 1e-6,
+                    sigmas: cfg.classify.lyapunov_sigmas,
+                    threshold: cfg.classify.lyapunov_threshold_per_period / period,
+                };
+                let scale = rec.state_range.map(|s| if s > 0.0 { s } else { 1.0 });
+                let est = largest_lyapunov_blocks(&sys, &rec.final_state, 0, &scale, &lcfg, |x| {
+                    series.push(model.deflection(&sys, 0, x))
+                })?;
+                ev.lyapunov_per_period = Some(est.exponent * period);
+                ev.lyapunov_stderr_per_period = Some(est.standard_error * period);
+            }
+            if series.len() >= MIN_ZERO_ONE_POINTS {
+                ev.zero_one_k = Some(zero_one_test(&series));
+            }
+            chaos_verdict(&ev, &cfg.classify)
+        }
     };
-    Ok(SpeedPoint {
-        speed,
-        impact: impact_regime(rec.observable_min, rec.observable_max, model.half_backlash()),
-        poincare_deflection: rec.observable,
-        deflection_min: rec.observable_min,
-        deflection_max: rec.observable_max,
-        motion,
-        lyapunov_per_period: lyapunov,
-    })
+    let xf = rec.final_state;
+    Ok((
+        SpeedPoint {
+            speed,
+            impact: impact_regime(rec.observable_min, rec.observable_max, model.half_backlash()),
+            poincare_deflection: rec.observable,
+            deflection_min: rec.observable_min,
+            deflection_max: rec.observable_max,
+            motion,
+            lyapunov_per_period: ev.lyapunov_per_period,
+            lyapunov_stderr_per_period: ev.lyapunov_stderr_per_period,
+            zero_one_k: ev.zero_one_k,
+            transient_periods: transient,
+            settled,
+        },
+        xf,
+    ))
 }
 
 /// Simulate one speed from `x0`; returns the point and the final state.
@@ -244,17 +345,21 @@ pub fn run_speed<const N: usize, M: SweepModel<N>>(
     cfg: &SweepConfig,
 ) -> Result<(SpeedPoint, [f64; N])> {
     let rec = record_speed(model, speed, x0, cfg)?;
-    let xf = rec.final_state;
-    Ok((finish_point(model, speed, rec, cfg)?, xf))
+    settle_and_finish(model, speed, rec, cfg)
 }
 
 fn finish(direction: SweepDirection, points: Vec<SpeedPoint>, cfg: &SweepConfig) -> SweepResult {
-    let amp: Vec<f64> = points.iter().map(SpeedPoint::amplitude).collect();
-    let jumps = detect_jumps(&amp, cfg.jump_rel, cfg.jump_trend_factor, 5);
+    let motions: Vec<Motion> = points.iter().map(|p| p.motion).collect();
+    let lo: Vec<f64> = points.iter().map(|p| p.deflection_min).collect();
+    let hi: Vec<f64> = points.iter().map(|p| p.deflection_max).collect();
+    let (jumps, transitions) = jumps_and_transitions(&motions, &lo, &hi, cfg.jump_rel, cfg.jump_trend_factor, 5);
+    let unsettled = (0..points.len()).filter(|&i| !points[i].settled).collect();
     SweepResult {
         direction,
         points,
         jumps,
+        transitions,
+        unsettled,
     }
 }
 
@@ -347,8 +452,9 @@ fn continuation_group<const N: usize, M: SweepModel<N>>(
         let sp: Vec<f64> = jobs.iter().map(|(_, d)| speeds[index(*d, i)]).collect();
         let recs = M::poincare_many(&models, &sp, &xs, cfg)?;
         for (j, rec) in recs.into_iter().enumerate() {
-            xs[j] = rec.final_state;
-            slots[j][index(jobs[j].1, i)] = Some(finish_point(models[j], sp[j], rec, cfg)?);
+            let (p, xf) = settle_and_finish(models[j], sp[j], rec, cfg)?;
+            xs[j] = xf;
+            slots[j][index(jobs[j].1, i)] = Some(p);
         }
         counter.tick(jobs.len())?;
     }
@@ -536,6 +642,16 @@ impl SweepModel<14> for HelicalSweep {
     fn initial_state(&self, speed: f64) -> Result<[f64; 14]> {
         self.pair_at(speed)?.static_state()
     }
+    /// The dynamic transmission error and its rate times `T / (2 pi)` (T the
+    /// mesh period), both \[m\]: the bearing coordinates enter only through
+    /// the DTE.
+    fn section_outputs(&self, sys: &HelicalPairSystem, x: &[f64; 14]) -> Vec<f64> {
+        let w = sys.period_s() / (2.0 * std::f64::consts::PI);
+        vec![
+            sys.relative_deflection_m(0, x),
+            sys.relative_deflection_rate_m_per_s(0, x) * w,
+        ]
+    }
 
     /// Lock-step batches of [`LANES`] systems (short batches are padded by
     /// repeating their first lane).
@@ -572,6 +688,10 @@ impl SweepModel<2> for BacklashOscillator {
     }
     fn half_backlash(&self) -> f64 {
         1.0
+    }
+    /// Displacement and velocity times `1 / Omega` (both in units of b).
+    fn section_outputs(&self, sys: &BacklashOscillatorSystem, x: &[f64; 2]) -> Vec<f64> {
+        vec![x[0], x[1] * sys.period() / (2.0 * std::f64::consts::PI)]
     }
     fn initial_state(&self, _speed: f64) -> Result<[f64; 2]> {
         // Static contact: k f(x) = F_m  ->  x = F_m + sign(F_m).

@@ -624,6 +624,13 @@ impl HelicalPairSystem {
         self.a.iter().zip(x.iter()).map(|(a, q)| a * q).sum::<f64>() - self.coef[j][1]
     }
 
+    /// Rate of the dynamic transmission error `d(delta_n - e)/dt` \[m/s\]
+    /// at the start of RK4 step `n` (grid point 2n).
+    pub fn relative_deflection_rate_m_per_s(&self, n: usize, x: &[f64; 14]) -> f64 {
+        let j = (2 * n) % self.coef.len();
+        self.a.iter().zip(x[7..].iter()).map(|(a, v)| a * v).sum::<f64>() - self.coef[j][2]
+    }
+
     #[inline(always)]
     fn accel(&self, km: f64, e: f64, edot: f64, x: &[f64; 14], dx: &mut [f64; 14]) {
         // Pairwise sums (shorter dependency chains than a running sum); the
