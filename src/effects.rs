@@ -210,9 +210,36 @@ impl EffectSet {
     }
 }
 
+/// Serialised as the list of effect names (stable across versions of the
+/// bit layout).
+impl serde::Serialize for EffectSet {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        serializer.collect_seq(self.names())
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for EffectSet {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
+        let names = <Vec<String> as serde::Deserialize>::deserialize(deserializer)?;
+        EffectSet::from_names(&names).map_err(serde::de::Error::custom)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn serde_uses_names_and_round_trips() {
+        let s = EffectSet::none().with(Effect::ALL[0]).with(Effect::ALL[2]);
+        let text = serde_json::to_string(&s).unwrap();
+        assert_eq!(
+            text,
+            format!("[\"{}\",\"{}\"]", Effect::ALL[0].name(), Effect::ALL[2].name())
+        );
+        assert_eq!(serde_json::from_str::<EffectSet>(&text).unwrap(), s);
+        assert!(serde_json::from_str::<EffectSet>("[\"no_such_effect\"]").is_err());
+    }
 
     #[test]
     fn names_round_trip_and_unknown_rejected() {

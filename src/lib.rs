@@ -150,6 +150,7 @@ pub mod effects;
 pub mod error;
 pub mod gear;
 pub mod materials;
+pub mod persist;
 pub mod rotor;
 pub mod spindle;
 pub mod thermal;

@@ -6,7 +6,7 @@ use crate::error::{in_range, positive, Result};
 
 /// An isotropic, linear-elastic solid with the thermal properties the
 /// bearing and thermal models need.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Material {
     /// Material name (preset name, e.g. "52100", or a user material's name).
     pub name: String,

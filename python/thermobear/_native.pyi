@@ -10,6 +10,11 @@ import numpy.typing as npt
 
 __version__: str
 
+#: Rebuild a native object from the versioned state of ``__reduce__``
+#: (``{"format": "thermobear", "version": 1, "kind": ..., "data": <JSON>}``);
+#: an unknown format, version or kind raises ConfigError.
+_restore: Callable[[dict[str, Any]], Any]
+
 class ThermobearError(Exception): ...
 class ConfigError(ThermobearError): ...
 class ConvergenceError(ThermobearError): ...
@@ -17,6 +22,8 @@ class ThermalRunawayError(ConvergenceError): ...
 class DataError(ThermobearError): ...
 
 class Material:
+    def __reduce__(self) -> tuple[Callable[[dict[str, Any]], Any], tuple[dict[str, Any]]]:
+        """Pickle support: ``(_restore, ({format, version, kind, data},))``."""
     def __init__(
         self,
         name: str,
@@ -47,6 +54,8 @@ class Material:
     def specific_heat_j_kgk(self) -> float: ...
 
 class Bearing:
+    def __reduce__(self) -> tuple[Callable[[dict[str, Any]], Any], tuple[dict[str, Any]]]:
+        """Pickle support: ``(_restore, ({format, version, kind, data},))``."""
     @staticmethod
     def preset(name: str) -> Bearing: ...
     @staticmethod
@@ -132,6 +141,8 @@ def stiffness_curve(
 # ---- helical gear pair dynamics (src/python/gear.rs) ----
 
 class GearPair:
+    def __reduce__(self) -> tuple[Callable[[dict[str, Any]], Any], tuple[dict[str, Any]]]:
+        """Pickle support: ``(_restore, ({format, version, kind, data},))``."""
     @staticmethod
     def preset(name: str) -> GearPair: ...
     @staticmethod
@@ -163,6 +174,8 @@ class GearPair:
     def mesh_frequency_hz(self, speed_rpm: float) -> float: ...
 
 class GearSystem:
+    def __reduce__(self) -> tuple[Callable[[dict[str, Any]], Any], tuple[dict[str, Any]]]:
+        """Pickle support: ``(_restore, ({format, version, kind, data},))``."""
     def __init__(
         self,
         gear: GearPair,
@@ -296,6 +309,8 @@ def rotor_spectrum(
 def rotor_default_effects() -> list[str]: ...
 
 class Spindle:
+    def __reduce__(self) -> tuple[Callable[[dict[str, Any]], Any], tuple[dict[str, Any]]]:
+        """Pickle support: ``(_restore, ({format, version, kind, data},))``."""
     @staticmethod
     def preset(name: str) -> Spindle: ...
     @staticmethod

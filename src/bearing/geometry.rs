@@ -4,7 +4,7 @@
 use crate::error::{in_range, non_negative, positive, Error, Result};
 
 /// Deep-groove (radial) or angular-contact ball bearing.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum BearingType {
     /// Deep-groove (radial) bearing, e.g. 6208: the free contact angle
     /// follows from the diametral clearance ([`BearingGeometry::deep_groove`]).
@@ -26,7 +26,7 @@ impl BearingType {
 }
 
 /// Internal geometry of one ball bearing.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct BearingGeometry {
     /// Deep-groove or angular-contact; set by the constructor used.
     pub bearing_type: BearingType,

@@ -53,7 +53,7 @@ pub use sweep::{speed_sweep, stiffness_curve, StiffnessPoint};
 
 /// One ball bearing: internal geometry, the materials of its parts and the
 /// shaft it sits on (needed for centrifugal expansion, A-10).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Bearing {
     /// Designation, e.g. `6208` or `7009C-hybrid` (the preset name).
     pub name: String,

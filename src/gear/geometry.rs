@@ -30,7 +30,7 @@ use std::f64::consts::PI;
 pub const MIN_TEETH: u32 = 6;
 
 /// One wheel of the pair: the data that differ between pinion and gear.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct WheelSpec {
     /// Number of teeth z.
     pub teeth: u32,
@@ -64,7 +64,7 @@ impl WheelSpec {
 
 /// Input data of a helical gear pair (all SI). Build a validated
 /// [`GearPair`] with [`GearPair::new`].
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct GearPairSpec {
     /// [pinion, gear].
     pub wheels: [WheelSpec; 2],
@@ -578,7 +578,7 @@ fn validate_geometry(s: &GearPairSpec, g: &GearGeometry) -> Result<()> {
 
 /// One suspicious value in a table of gear data, with the value most likely
 /// meant (docs/concepts/physics.md §8).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct TypoWarning {
     /// Field name with its unit as printed (e.g. `youngs_modulus_mpa`).
     pub field: String,

@@ -86,6 +86,11 @@ impl PyMaterial {
         self.inner.specific_heat_j_kgk
     }
 
+    /// Pickle support: the versioned serde envelope (see `_restore`).
+    fn __reduce__(&self, py: Python<'_>) -> PyResult<super::persist::Reduced> {
+        super::persist::reduce(py, "Material", &self.inner)
+    }
+
     fn __repr__(&self) -> String {
         let m = &self.inner;
         format!(
@@ -349,6 +354,11 @@ impl PyBearing {
         raceway_control: &str,
     ) -> PyResult<Bound<'py, PyDict>> {
         super::solve::ring_forces_point(py, &self.inner, displacement, speed_rpm, effects, raceway_control)
+    }
+
+    /// Pickle support: the versioned serde envelope (see `_restore`).
+    fn __reduce__(&self, py: Python<'_>) -> PyResult<super::persist::Reduced> {
+        super::persist::reduce(py, "Bearing", &self.inner)
     }
 
     fn __repr__(&self) -> String {

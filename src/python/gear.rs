@@ -299,6 +299,11 @@ impl PyGearPair {
         self.inner.mesh_frequency_hz(speed_rpm).py_err()
     }
 
+    /// Pickle support: the versioned serde envelope (see `_restore`).
+    fn __reduce__(&self, py: Python<'_>) -> PyResult<super::persist::Reduced> {
+        super::persist::reduce_gear_pair(py, self)
+    }
+
     fn __repr__(&self) -> String {
         let s = &self.inner.spec;
         format!(
@@ -338,6 +343,8 @@ pub struct PyGearSystem {
     pub defaults: GearSystemDefaults,
     pub schedule: Vec<(f64, f64, f64)>,
     pub mesh_model: String,
+    /// The gear pair spec the system was built from (pickling).
+    pub spec: GearPairSpec,
 }
 
 fn mesh_damping_mode(name: &str) -> Result<MeshDamping> {
@@ -424,7 +431,13 @@ impl PyGearSystem {
                 .map(|((&s, &r), &a)| (s, r, a))
                 .collect(),
             mesh_model: model,
+            spec: pair.spec.clone(),
         })
+    }
+
+    /// Pickle support: the versioned serde envelope (see `_restore`).
+    fn __reduce__(&self, py: Python<'_>) -> PyResult<super::persist::Reduced> {
+        self.reduce_state(py)
     }
 
     /// Model numbers: mean/min/max normal mesh stiffness, mesh damping, masses,
@@ -542,6 +555,61 @@ impl PyGearSystem {
 
 fn mesh_model_of(pair: &GearPair, model: &str) -> Result<MeshStiffness> {
     mesh_model(pair, model)
+}
+
+impl PyGearSystem {
+    /// The serialised state of the system (pickling).
+    fn reduce_state(&self, py: Python<'_>) -> PyResult<super::persist::Reduced> {
+        let d = &self.defaults;
+        let state = super::persist::GearSystemState {
+            spec: self.spec.clone(),
+            half_backlash_m: d.half_backlash_m,
+            mesh_damping_ratio: d.mesh_damping_ratio,
+            mesh_damping: match d.mesh_damping {
+                MeshDamping::Always => "always".to_string(),
+                _ => "in-contact".to_string(),
+            },
+            bearing_damping_ratio: d.bearing_damping_ratio,
+            te_amplitude_m: d.te_amplitude_m,
+            table_points: d.table_points,
+            schedule: self.schedule.clone(),
+            mesh_model: self.mesh_model.clone(),
+        };
+        super::persist::reduce(py, "GearSystem", &state)
+    }
+
+    /// Rebuild a system from its serialised state, as `new` builds it.
+    pub(super) fn restore(py: Python<'_>, s: super::persist::GearSystemState) -> PyResult<Self> {
+        let defaults = GearSystemDefaults {
+            half_backlash_m: s.half_backlash_m,
+            mesh_damping_ratio: s.mesh_damping_ratio,
+            mesh_damping: mesh_damping_mode(&s.mesh_damping).py_err()?,
+            bearing_damping_ratio: s.bearing_damping_ratio,
+            te_amplitude_m: s.te_amplitude_m,
+            table_points: s.table_points,
+        };
+        defaults.check().py_err()?;
+        let schedule = BearingSchedule::new(s.schedule.clone()).py_err()?;
+        let pair = GearPair::new(s.spec.clone()).py_err()?;
+        let mesh = {
+            let (p, m) = (pair.clone(), s.mesh_model.clone());
+            py.detach(move || mesh_model_of(&p, &m)).py_err()?
+        };
+        let te = TransmissionError::harmonics(vec![(defaults.te_amplitude_m, 0.0)]).py_err()?;
+        let first = s.schedule.first().map(|p| p.0).unwrap_or(0.0);
+        let (kr, ka) = schedule.at(first);
+        let params = helical_params(&pair, &mesh, &te, kr, ka, &defaults).py_err()?;
+        Ok(PyGearSystem {
+            sweep: HelicalSweep {
+                pair: HelicalPair::new(params).py_err()?,
+                bearings: schedule,
+            },
+            defaults,
+            spec: s.spec,
+            schedule: s.schedule,
+            mesh_model: s.mesh_model,
+        })
+    }
 }
 
 impl PyGearSystem {

@@ -7,6 +7,7 @@ pub mod bearing;
 pub mod errors;
 pub mod gear;
 pub mod parallel;
+pub mod persist;
 pub mod rotor;
 pub mod solve;
 pub mod spindle;
@@ -21,6 +22,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     rotor::register(m)?;
     spindle::register(m)?;
     thermal::register(m)?;
+    persist::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

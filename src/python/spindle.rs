@@ -187,6 +187,11 @@ impl PySpindle {
         })
     }
 
+    /// Pickle support: the versioned serde envelope (see `_restore`).
+    fn __reduce__(&self, py: Python<'_>) -> PyResult<super::persist::Reduced> {
+        super::persist::reduce_spindle(py, self)
+    }
+
     #[getter]
     fn name(&self) -> &str {
         &self.name

@@ -24,7 +24,7 @@ use crate::error::{in_range, non_negative, positive, Result};
 pub const MU0_H_PER_M: f64 = 1.256_637_062_12e-6;
 
 /// Unbalanced magnetic pull of the motor rotor, switchable.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct UnbalancedMagneticPull {
     /// Include the pull (negative stiffness and static-eccentricity force)?
     pub enabled: bool,

@@ -71,7 +71,7 @@ pub const DEFAULT_SPIN_FRICTION: f64 = 0.05;
 pub const SEED_B_SPRING_RATE_N_PER_M: f64 = 6.45 / 17.92e-6;
 
 /// Everything that defines a spindle besides the network parameters.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct SpindleConfig {
     /// Network and geometry (front/rear bearings inside).
     pub params: SpindleParams,

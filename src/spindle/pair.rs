@@ -42,7 +42,7 @@ use crate::bearing::{BearingModel, BearingState, RacewayOffsets, RingForces, Sol
 use crate::error::{finite, non_negative, positive, Error, Result};
 
 /// How the pair is preloaded.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum Preload {
     /// Fixed axial positions with the interference that gives `force_n`
     /// per bearing at zero speed and uniform assembly temperature.

@@ -52,7 +52,7 @@ pub fn lever_rule_n(force_n: f64, position_from_front_m: f64, span_m: f64) -> Re
 
 /// The static unbalanced magnetic pull of the motor rotor as a load on the
 /// spindle shaft (module docs).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct CoreMagneticPull {
     /// Air-gap data of the rotor core, the same struct (and for seed B the
     /// same numbers) as the rotor model's; its `position_m` is the rotor

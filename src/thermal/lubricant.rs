@@ -29,7 +29,7 @@ const WALTHER_OFFSET_CST: f64 = 0.7;
 const WATER_15C_KG_M3: f64 = 999.1;
 
 /// A lubricating oil with temperature-dependent properties.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Lubricant {
     /// Oil name (e.g. "ISO VG 32").
     pub name: String,

@@ -73,7 +73,7 @@ fn film(lub: &Lubricant, oil_c: f64, length_m: f64, velocity_per_speed_m: f64) -
 }
 
 /// How heat crosses from the balls into a raceway.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum BallConduction {
     /// Seed A Table A-2: 1/(k_b pi D_b) per ball (bulk conduction of the
     /// ball, no contact constriction), Z balls in parallel.
@@ -282,7 +282,7 @@ pub fn seed_a_network(bearing: &Bearing, p: &SeedAParams) -> Result<BearingNetwo
 
 /// Assumed data of the seed B motorized spindle (all SI). Defaults in
 /// [`SpindleParams::seed_b`].
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct SpindleParams {
     /// Bearing of the front (nose-side) pair; default 7009C-ceramic.
     pub front_bearing: Bearing,

@@ -31,6 +31,14 @@ class ModelSpec:
     options: dict = {}
     _cache: dict
 
+    def __getstate__(self) -> dict:
+        """Pickle without the solve cache: the copy solves again (the model
+        objects pickle exactly, so its results are bit-identical)."""
+        state = dict(self.__dict__)
+        if "_cache" in state:
+            state["_cache"] = {}
+        return state
+
     def candidate_list(self, quantities: Sequence[str] = ()) -> list:
         """The candidates against this baseline, with a sensor-offset decoy
         per measured quantity in ``quantities``."""
