@@ -359,7 +359,7 @@ fn mesh_damping_mode(name: &str) -> Result<MeshDamping> {
     }
 }
 
-fn support_schedule(speeds: &[f64], kr: &[f64], ka: &[f64]) -> Result<BearingSchedule> {
+fn support_schedule(speeds: &[f64], kr: &[f64], ka: &[f64]) -> Result<Vec<(f64, f64, f64)>> {
     if speeds.len() != kr.len() || speeds.len() != ka.len() {
         return Err(Error::config(
             "bearing_schedule",
@@ -367,7 +367,7 @@ fn support_schedule(speeds: &[f64], kr: &[f64], ka: &[f64]) -> Result<BearingSch
             "speed_rpm, radial and axial stiffness arrays must have the same length",
         ));
     }
-    BearingSchedule::new(speeds.iter().zip(kr).zip(ka).map(|((&s, &r), &a)| (s, r, a)).collect())
+    Ok(speeds.iter().zip(kr).zip(ka).map(|((&s, &r), &a)| (s, r, a)).collect())
 }
 
 #[pymethods]
@@ -401,38 +401,12 @@ impl PyGearSystem {
             te_amplitude_m: te_amplitude_um * 1e-6,
             table_points,
         };
-        defaults.check().py_err()?;
         let schedule = support_schedule(&speeds_rpm, &radial_stiffness_n_per_m, &axial_stiffness_n_per_m).py_err()?;
         let mut spec = gear.inner.spec.clone();
         if let Some(t) = torque_nm {
             spec.input_torque_n_m = finite("torque_nm", t).py_err()?;
         }
-        let pair = GearPair::new(spec).py_err()?;
-        let model = mesh_model.to_string();
-        let mesh = {
-            let p = pair.clone();
-            let m = model.clone();
-            py.detach(move || mesh_model_of(&p, &m)).py_err()?
-        };
-        let te = TransmissionError::harmonics(vec![(defaults.te_amplitude_m, 0.0)]).py_err()?;
-        let (kr, ka) = schedule.at(speeds_rpm[0]);
-        let params = helical_params(&pair, &mesh, &te, kr, ka, &defaults).py_err()?;
-        let helical = HelicalPair::new(params).py_err()?;
-        Ok(PyGearSystem {
-            sweep: HelicalSweep {
-                pair: helical,
-                bearings: schedule,
-            },
-            defaults,
-            schedule: speeds_rpm
-                .iter()
-                .zip(&radial_stiffness_n_per_m)
-                .zip(&axial_stiffness_n_per_m)
-                .map(|((&s, &r), &a)| (s, r, a))
-                .collect(),
-            mesh_model: model,
-            spec: pair.spec.clone(),
-        })
+        Self::build(py, spec, defaults, schedule, mesh_model.to_string())
     }
 
     /// Pickle support: the versioned serde envelope (see `_restore`).
@@ -578,7 +552,7 @@ impl PyGearSystem {
         super::persist::reduce(py, "GearSystem", &state)
     }
 
-    /// Rebuild a system from its serialised state, as `new` builds it.
+    /// Rebuild a system from its serialised state (SI, as `new` stores it).
     pub(super) fn restore(py: Python<'_>, s: super::persist::GearSystemState) -> PyResult<Self> {
         let defaults = GearSystemDefaults {
             half_backlash_m: s.half_backlash_m,
@@ -588,26 +562,38 @@ impl PyGearSystem {
             te_amplitude_m: s.te_amplitude_m,
             table_points: s.table_points,
         };
+        Self::build(py, s.spec, defaults, s.schedule, s.mesh_model)
+    }
+
+    /// The system from SI inputs: the one build path of `new` and `restore`
+    /// (mesh stiffness tabulated with the GIL released; the helical pair at
+    /// the first schedule speed's support stiffness).
+    fn build(
+        py: Python<'_>,
+        spec: GearPairSpec,
+        defaults: GearSystemDefaults,
+        schedule: Vec<(f64, f64, f64)>,
+        mesh_model: String,
+    ) -> PyResult<Self> {
         defaults.check().py_err()?;
-        let schedule = BearingSchedule::new(s.schedule.clone()).py_err()?;
-        let pair = GearPair::new(s.spec.clone()).py_err()?;
+        let bearings = BearingSchedule::new(schedule.clone()).py_err()?;
+        let pair = GearPair::new(spec).py_err()?;
         let mesh = {
-            let (p, m) = (pair.clone(), s.mesh_model.clone());
+            let (p, m) = (pair.clone(), mesh_model.clone());
             py.detach(move || mesh_model_of(&p, &m)).py_err()?
         };
         let te = TransmissionError::harmonics(vec![(defaults.te_amplitude_m, 0.0)]).py_err()?;
-        let first = s.schedule.first().map(|p| p.0).unwrap_or(0.0);
-        let (kr, ka) = schedule.at(first);
+        let (kr, ka) = bearings.at(schedule[0].0);
         let params = helical_params(&pair, &mesh, &te, kr, ka, &defaults).py_err()?;
         Ok(PyGearSystem {
             sweep: HelicalSweep {
                 pair: HelicalPair::new(params).py_err()?,
-                bearings: schedule,
+                bearings,
             },
             defaults,
-            spec: s.spec,
-            schedule: s.schedule,
-            mesh_model: s.mesh_model,
+            spec: pair.spec.clone(),
+            schedule,
+            mesh_model,
         })
     }
 }
