@@ -365,27 +365,42 @@ def _switch_candidates(base: set, allq: tuple) -> list[Candidate]:
     return out
 
 
+def _calibrated_input(
+    name: str, option: str, unit: str, value: float, bounds: tuple, desc: str, quantities: tuple
+) -> Candidate:
+    """A baseline input calibrated over its bounds (widened to hold the
+    baseline value, which is snapped onto the screening grid)."""
+    v = _on_grid(float(value), *bounds)
+    return Candidate(
+        name,
+        "parameter",
+        "model",
+        option,
+        unit,
+        min(bounds[0], v),
+        max(bounds[1], v),
+        v,
+        desc,
+        quantities,
+        option=option,
+        role="calibration",
+    )
+
+
 def _spin_friction_candidates(opts: dict, allq: tuple) -> list[Candidate]:
     """The spin friction coefficient, a baseline input."""
-    out: list[Candidate] = []
-    mu = _on_grid(float(opts["spin_friction"]), *_SPIN_BOUNDS)
-    out.append(
-        Candidate(
+    desc = "spin friction coefficient mu_s (acts with the spin_friction effect on)"
+    return [
+        _calibrated_input(
             "spin_friction_coefficient",
-            "parameter",
-            "model",
             "spin_friction",
             "1",
-            min(_SPIN_BOUNDS[0], mu),
-            max(_SPIN_BOUNDS[1], mu),
-            mu,
-            "spin friction coefficient mu_s (acts with the spin_friction effect on)",
+            opts["spin_friction"],
+            _SPIN_BOUNDS,
+            desc,
             allq,
-            option="spin_friction",
-            role="calibration",
         )
-    )
-    return out
+    ]
 
 
 def _preload_candidates(opts: dict, allq: tuple) -> list[Candidate]:
@@ -410,21 +425,16 @@ def _preload_candidates(opts: dict, allq: tuple) -> list[Candidate]:
             )
         )
     if opts["preload_kind"] == "spring":
-        k = _on_grid(float(opts["spring_rate_n_per_um"]), *_SPRING_BOUNDS)
+        desc = "preload spring rate (thermal growth changes the preload by rate x growth)"
         out.append(
-            Candidate(
+            _calibrated_input(
                 "spring_rate_n_per_um",
-                "parameter",
-                "model",
                 "spring_rate_n_per_um",
                 "N/um",
-                min(_SPRING_BOUNDS[0], k),
-                max(_SPRING_BOUNDS[1], k),
-                k,
-                "preload spring rate (thermal growth changes the preload by rate x growth)",
+                opts["spring_rate_n_per_um"],
+                _SPRING_BOUNDS,
+                desc,
                 allq,
-                option="spring_rate_n_per_um",
-                role="calibration",
             )
         )
     return out
@@ -432,25 +442,18 @@ def _preload_candidates(opts: dict, allq: tuple) -> list[Candidate]:
 
 def _unbalance_candidates(opts: dict) -> list[Candidate]:
     """The rotor's residual unbalance grade (acts on the vibration only)."""
-    out: list[Candidate] = []
-    g = _on_grid(float(opts["unbalance_grade"]), *_UNBALANCE_BOUNDS)
-    out.append(
-        Candidate(
+    desc = "residual unbalance of the rotor (ISO 21940 grade at 30,000 rpm)"
+    return [
+        _calibrated_input(
             "unbalance_grade",
-            "parameter",
-            "model",
             "unbalance_grade",
             "mm/s",
-            min(_UNBALANCE_BOUNDS[0], g),
-            max(_UNBALANCE_BOUNDS[1], g),
-            g,
-            "residual unbalance of the rotor (ISO 21940 grade at 30,000 rpm)",
+            opts["unbalance_grade"],
+            _UNBALANCE_BOUNDS,
+            desc,
             (_VIB,),
-            option="unbalance_grade",
-            role="calibration",
         )
-    )
-    return out
+    ]
 
 
 def _on_grid(null: float, lo: float, hi: float) -> float:
