@@ -88,9 +88,7 @@ class Rig(ModelSpec):
 
 def conditions(speeds, loads=(300.0,), quantities=tuple(Q), runs=("1",)) -> pl.DataFrame:
     """Every quantity at every speed, load and run."""
-    rows = [
-        (s, a, 0.0, q, r) for r in runs for a in loads for s in speeds for q in quantities
-    ]
+    rows = [(s, a, 0.0, q, r) for r in runs for a in loads for s in speeds for q in quantities]
     return pl.DataFrame(
         rows, schema=["speed_rpm", "axial_n", "radial_n", "quantity", "run"], orient="row"
     )

@@ -281,4 +281,3 @@ def _result(prob: _Problem, theta, intervals, weak, stats) -> Calibration:
     bad = sorted({f"{prob.slots[j].name}@{prob.slots[j].label}" for j in weak})
     notes = [f"not identified by these data: {', '.join(bad)}"] if bad else []
     return Calibration(table, chi_min, chi_before, n, phi, cond, bad, points, notes)
-

@@ -80,28 +80,36 @@ def _single_point(r: np.ndarray, j: int) -> bool:
     return all(d[j] > NEIGHBOUR_RATIO * d[k] for k in nb)
 
 
+def _worst(x: np.ndarray, r: np.ndarray) -> tuple[int, float]:
+    """The point of a series farthest from the trend of the others and its
+    robust z: its leave-one-out deviation over the robust scale of the
+    other points' deviations (computed without it, so that a gross point
+    does not inflate the scale it is judged by); (-1, 0) when it does not
+    stand alone."""
+    t = loo_deviation(x, r)
+    j = int(np.argmax(np.abs(t)))
+    rest = np.arange(len(r)) != j
+    z = t[j] / _robust_scale(loo_deviation(x[rest], r[rest]))
+    return (j, float(z)) if _single_point(r, j) else (-1, 0.0)
+
+
 def flag_outliers(df, r: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(mask of the outliers, robust z = t / s of every row) by the rule of
-    the module docstring, on the residual ``r`` (in sigma) of the rows of
-    the tidy table ``df``."""
+    """(mask of the outliers, robust z of the flagged rows, 0 elsewhere) by
+    the rule of the module docstring, on the residual ``r`` (in sigma) of
+    the rows of the tidy table ``df``."""
     sp = df["speed_rpm"].to_numpy().astype(float)
-    q = df["quantity"].to_numpy()
-    series = _series(df)
-    t_all = np.zeros(len(r))
-    for rows in series:
-        t_all[rows] = loo_deviation(sp[rows], r[rows])
-    scale = {qq: _robust_scale(t_all[(q == qq)]) for qq in set(q.tolist())}
     flagged = np.zeros(len(r), dtype=bool)
-    z = t_all / np.array([scale[qq] for qq in q])
-    for rows in series:
+    z = np.zeros(len(r))
+    for rows in _series(df):
         live = rows.copy()
         for _ in range(len(rows) // 4):
-            t = loo_deviation(sp[live], r[live]) / scale[q[live[0]]]
-            j = int(np.argmax(np.abs(t)))
-            if abs(t[j]) <= Z_OUTLIER or not _single_point(r[live], j):
+            if len(live) < 5:  # the trend of the others needs four points
+                break
+            j, zj = _worst(sp[live], r[live])
+            if j < 0 or abs(zj) <= Z_OUTLIER:
                 break
             flagged[live[j]] = True
-            z[live[j]] = t[j]
+            z[live[j]] = zj
             live = np.delete(live, j)
     return flagged, z
 
