@@ -93,8 +93,10 @@ def test_speed_growing_effect_found_although_the_top_speeds_hide_most_of_it():
     for seed in range(20):
         d = tb.diagnose(BASE, measured(truth, conditions(SPEEDS), seed), suggest=False)
         named += [a["name"] for a in d.accepted] == ["drag_coefficient"]
+        named += "drag_coefficient" in d.tie  # f0 ~ n^(2/3) is a partial look-alike
         row = d.screening[0].filter(pl.col("candidate") == "drag_coefficient")
         assert row["heldout_chi2_after"][0] >= 0.0  # the extrapolation check, reported
+        assert not d.accepted or d.accepted[0]["name"] == "drag_coefficient"
     assert named >= 18
 
 

@@ -24,6 +24,10 @@ _DENSE = 601
 
 _CHI2_95 = 3.841  # chi^2(1) 95 % quantile: profile interval
 
+#: A calibrated value within this fraction of the span from a bound sits
+#: at the bound (the dense grid's spacing is 1/600 of the span).
+_AT_BOUND = 2e-3
+
 
 @dataclass
 class _Curve:
@@ -135,7 +139,7 @@ def _fit(curve: _Curve, y, s, mask, dense=None) -> dict:
 
     lo95 = _profile_edge(excess, grid, chi, best_v, best_c, -1, thr)
     hi95 = _profile_edge(excess, grid, chi, best_v, best_c, +1, thr)
-    tol = (hi - lo) * 0.01
+    tol = (hi - lo) * _AT_BOUND
     return {
         "value": float(best_v),
         "chi2": float(best_c),

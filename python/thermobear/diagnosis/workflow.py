@@ -64,7 +64,7 @@ from .result import Diagnosis
 from .screening import candidate_curves, screen, screening_table
 from .setting import _predict, _Setting
 from .statistics import _chi2, noise_p_value
-from .ties import tie_gap, tie_table
+from .ties import significant_rivals, tie_gap, tie_table
 from .verdict import verdict_text
 
 __all__ = ["diagnose"]
@@ -225,6 +225,7 @@ def _screening_round(s: _Search, rnd: int, rules: _Rules) -> bool:
     best, rivals = select(rows, rules.tie_delta_bic)
     if best is None:
         return False
+    rivals += significant_rivals(rows, fits, best, d, set(rivals))
     if rivals:
         s.tie = [best["candidate"]] + rivals
         if ctrl is not None and control_matches(ctrl, best, rules.tie_delta_bic):
