@@ -150,19 +150,18 @@ def test_named_effect_beats_the_control_when_its_fingerprint_spans_quantities():
 # -- item 4: outliers ---------------------------------------------------------------
 
 
-def test_loo_deviation_is_the_leave_one_out_polynomial_residual():
+def test_loo_deviation_is_the_leave_one_out_line_residual():
     rng = np.random.default_rng(4)
     x = np.linspace(0.0, 1.0, 7)
     r = 2.0 + x + rng.normal(size=7)
     t = loo_deviation(x, r)
     for i in range(7):
         keep = np.arange(7) != i
-        c = np.polyfit(x[keep], r[keep], 2)
-        a = np.vander(x[keep], 3)
-        var = (
-            1.0 + np.vander(x[i : i + 1], 3) @ np.linalg.inv(a.T @ a) @ np.vander(x[i : i + 1], 3).T
-        )
-        assert t[i] == pytest.approx((r[i] - np.polyval(c, x[i])) / np.sqrt(var[0, 0]))
+        c = np.polyfit(x[keep], r[keep], 1)
+        a = np.vander(x[keep], 2)
+        xi = np.vander(x[i : i + 1], 2)
+        var = 1.0 + (xi @ np.linalg.inv(a.T @ a) @ xi.T)[0, 0]  # prediction variance + noise
+        assert t[i] == pytest.approx((r[i] - np.polyval(c, x[i])) / np.sqrt(var))
 
 
 def test_a_16_sigma_outlier_is_reported_and_left_out():
@@ -195,7 +194,7 @@ def test_outlier_beside_a_real_effect_and_no_false_flags_in_noise():
 
 def test_a_steep_smooth_rise_is_not_an_outlier():
     # a strong n^3 term left unexplained: the top point is far from a
-    # quadratic but not alone -- its neighbours rise too
+    # straight line but not alone -- its neighbours rise too
     cond = conditions(SPEEDS, quantities=("heat_w",))
     d = prepare_measurements(measured(BASE.with_setting(drag_coefficient=2.0), cond, 1), Q, None)
     r = d.residual(_predict(BASE, _Setting(), d.cond, d.quantity))

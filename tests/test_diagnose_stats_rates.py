@@ -180,11 +180,23 @@ def test_real_model_null_over_100_seeds(preset):
     assert found <= 5
 
 
+def _interval(d, name):
+    """The 95 % interval of ``name`` as accepted, as a tie member or as an
+    unresolved candidate; None when it has none."""
+    for a in d.accepted + d.unresolved:
+        if a["name"] == name:
+            return a["lower_95"], a["upper_95"]
+    if d.ties is not None and name in d.ties["candidate"].to_list():
+        row = d.ties.filter(pl.col("candidate") == name).row(0, named=True)
+        return row["lower_95"], row["upper_95"]
+    return None
+
+
 @pytest.mark.parametrize(
     "preset,option,value,name",
     [
         ("6208", "lubrication_factor_f0", 1.25, "lubrication_factor_f0"),
-        ("7008C-hybrid", "extra_heat_w", 4.0, "extra_heat_w"),
+        ("7008C-hybrid", "extra_heat_w", 15.0, "extra_heat_w"),
         ("7008C-hybrid", "ambient_temperature_c", 28.0, "ambient_temperature_offset_k"),
     ],
 )
@@ -194,15 +206,15 @@ def test_real_model_hidden_input_named_or_tied_and_covered(preset, option, value
     assert top_speed_sigma_real(truth, base, cond) > 3.0
     truth_value = value - base.options[option] if name.endswith("_offset_k") else value
     out, covered, n = [], 0, 0
-    for s in range(40):
+    for s in range(60):
         d = tb.diagnose(base, D.synthetic_measurements(truth, cond, 1.0, 70_000 + s), suggest=False)
         out.append(_outcome(d, name))
-        if out[-1] == "right":
-            a = d.accepted[0]
+        iv = _interval(d, name)
+        if iv is not None:
             n += 1
-            covered += a["lower_95"] <= truth_value <= a["upper_95"]
-    assert out.count("right") + out.count("tie") >= 36 and out.count("wrong") <= 2, out
-    assert covered >= 0.9 * n
+            covered += iv[0] <= truth_value <= iv[1]
+    assert out.count("right") + out.count("tie") >= 54 and out.count("wrong") <= 3, out
+    assert n >= 54 and covered >= 0.9 * n, (covered, n)
 
 
 def top_speed_sigma_real(truth, base, cond) -> float:
@@ -214,14 +226,21 @@ def top_speed_sigma_real(truth, base, cond) -> float:
 
 
 def test_real_model_thermocouple_offset_interval_covers():
+    """A +2 K thermocouple offset on the outer ring of a deep-groove 6208:
+    named, or tied with its look-alike (an ambient temperature offset
+    moves To most), and its 95 % interval covers 2 K."""
     base, cond = _real("6208"), _real_conditions("6208")
     to = pl.col("quantity") == "temperature_c:To"
-    covered = named = 0
+    name = "sensor_offset:temperature_c:To"
+    out, covered, n = [], 0, 0
     for s in range(60):
         m = D.synthetic_measurements(base, cond, 1.0, 80_000 + s)
         m = m.with_columns(pl.when(to).then(pl.col("value") + 2.0).otherwise(pl.col("value")))
         d = tb.diagnose(base, m, suggest=False)
-        if _outcome(d, "sensor_offset:temperature_c:To") == "right":
-            named += 1
-            covered += d.accepted[0]["lower_95"] <= 2.0 <= d.accepted[0]["upper_95"]
-    assert named >= 54 and covered >= 0.9 * named
+        out.append(_outcome(d, name))
+        iv = _interval(d, name)
+        if iv is not None:
+            n += 1
+            covered += iv[0] <= 2.0 <= iv[1]
+    assert out.count("right") + out.count("tie") >= 54 and out.count("wrong") <= 3, out
+    assert n >= 54 and covered >= 0.9 * n, (covered, n)

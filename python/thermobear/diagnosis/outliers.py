@@ -3,8 +3,9 @@ that no smooth model of their series can reach.
 
 The rule, on the residual (value - model) / sigma of the best-fit setting:
 a *series* is one quantity at one load and run, ordered by speed. Within a
-series of at least 4 points, each point's residual is compared with a
-polynomial in speed (degree 2, 1 with 4 points) fitted to the series, as
+series of at least 5 points, each point's residual is compared with a
+straight line in speed fitted to the series (the best fit has taken the
+curvature out; a line keeps the leverage of the end points low), as
 the standardized leave-one-out deviation ``t = e / sqrt(1 - h)`` (``e``
 the least-squares residual, ``h`` the leverage: the deviation from the
 trend of the *other* points, in units of its own standard deviation at
@@ -51,15 +52,14 @@ def _series(df) -> list[np.ndarray]:
 
 
 def loo_deviation(x: np.ndarray, r: np.ndarray) -> np.ndarray:
-    """Standardized leave-one-out deviation of each point from a polynomial
-    in ``x`` (degree 2, 1 with four points) through the others; zeros for
-    fewer than four points."""
+    """Standardized leave-one-out deviation of each point from a straight
+    line in ``x`` through the others; zeros for fewer than four points."""
     n = len(r)
     if n < 4:
         return np.zeros(n)
     span = x.max() - x.min()
     u = (x - x.min()) / span if span > 0 else np.zeros(n)
-    a = np.vander(u, min(2, n - 3) + 1)
+    a = np.vander(u, 2)
     q, _ = np.linalg.qr(a)
     h = np.sum(q * q, axis=1)
     e = r - q @ (q.T @ r)
@@ -80,16 +80,17 @@ def _single_point(r: np.ndarray, j: int) -> bool:
     return all(d[j] > NEIGHBOUR_RATIO * d[k] for k in nb)
 
 
-def _worst(x: np.ndarray, r: np.ndarray) -> tuple[int, float]:
+def _worst(x: np.ndarray, r: np.ndarray, pool: np.ndarray) -> tuple[int, float]:
     """The point of a series farthest from the trend of the others and its
     robust z: its leave-one-out deviation over the robust scale of the
-    other points' deviations (computed without it, so that a gross point
-    does not inflate the scale it is judged by); (-1, 0) when it does not
+    other points' deviations, recomputed without it (so that a gross point
+    does not inflate the scale it is judged by), pooled with ``pool`` (the
+    deviations of the quantity's other series); (-1, 0) when it does not
     stand alone."""
     t = loo_deviation(x, r)
     j = int(np.argmax(np.abs(t)))
     rest = np.arange(len(r)) != j
-    z = t[j] / _robust_scale(loo_deviation(x[rest], r[rest]))
+    z = t[j] / _robust_scale(np.concatenate([loo_deviation(x[rest], r[rest]), pool]))
     return (j, float(z)) if _single_point(r, j) else (-1, 0.0)
 
 
@@ -98,14 +99,20 @@ def flag_outliers(df, r: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     the rule of the module docstring, on the residual ``r`` (in sigma) of
     the rows of the tidy table ``df``."""
     sp = df["speed_rpm"].to_numpy().astype(float)
+    q = df["quantity"].to_numpy()
+    series = _series(df)
+    t_all = np.zeros(len(r))
+    for rows in series:
+        t_all[rows] = loo_deviation(sp[rows], r[rows])
     flagged = np.zeros(len(r), dtype=bool)
     z = np.zeros(len(r))
-    for rows in _series(df):
+    for rows in series:
+        pool = t_all[(q == q[rows[0]]) & ~np.isin(np.arange(len(r)), rows)]
         live = rows.copy()
         for _ in range(len(rows) // 4):
             if len(live) < 5:  # the trend of the others needs four points
                 break
-            j, zj = _worst(sp[live], r[live])
+            j, zj = _worst(sp[live], r[live], pool)
             if j < 0 or abs(zj) <= Z_OUTLIER:
                 break
             flagged[live[j]] = True

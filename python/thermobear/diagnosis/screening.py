@@ -166,29 +166,35 @@ def _refine(chi_at, grid, i, chi_i, xatol) -> tuple[float, float]:
     return best_v, best_c
 
 
-def cv_chi2(curve: _Curve, y, s, folds, dense=None) -> float:
+def _sq_residuals(curve: _Curve, y, s, dense=None) -> np.ndarray:
+    """Squared residuals (in sigma) of every row at every dense-grid value."""
+    _, p = dense if dense is not None else _dense(curve)
+    return ((y - p) / s) ** 2
+
+
+def cv_chi2(curve: _Curve, y, s, folds, dense=None, r2=None) -> float:
     """Cross-validated chi^2 of a candidate: for each fold, the parameter
     calibrated on the other folds (dense-grid minimum) predicts the fold;
     the sum over the folds. A switch has no parameter: its chi^2."""
     if curve.cand.kind == "switch":
         return _chi2((y - curve.preds[-1]) / s)
-    _, p = dense if dense is not None else _dense(curve)
-    r2 = ((y - p) / s) ** 2
-    onehot = folds[None, :] == np.unique(folds)[:, None]
-    per_fold = r2 @ onehot.T.astype(float)  # (_DENSE, n_folds)
+    r2 = _sq_residuals(curve, y, s, dense) if r2 is None else r2
+    ids = np.unique(folds, return_inverse=True)[1]
+    per_fold = np.zeros((r2.shape[0], int(ids.max()) + 1))
+    for f in range(per_fold.shape[1]):
+        per_fold[:, f] = r2[:, ids == f].sum(axis=1)
     train = per_fold.sum(axis=1)[:, None] - per_fold
     best = np.argmin(train, axis=0)
     return float(per_fold[best, np.arange(per_fold.shape[1])].sum())
 
 
-def extrapolation_chi2(curve: _Curve, y, s, train, dense=None) -> float:
+def extrapolation_chi2(curve: _Curve, y, s, train, dense=None, r2=None) -> float:
     """Chi^2 on the held-out points (``~train``) of the candidate
     calibrated on the training points only (dense-grid minimum)."""
     held = ~train
     if curve.cand.kind == "switch":
         return _chi2(((y - curve.preds[-1]) / s)[held])
-    _, p = dense if dense is not None else _dense(curve)
-    r2 = ((y - p) / s) ** 2
+    r2 = _sq_residuals(curve, y, s, dense) if r2 is None else r2
     i = int(np.argmin(r2[:, train].sum(axis=1)))
     return float(r2[i, held].sum())
 
@@ -248,11 +254,16 @@ def screen(curves, data, chi_base, chi_held, delta_bic_min, k_accepted: int = 0)
     rows, fits = [], {}
     everything = np.ones(data.n, dtype=bool)
     for name, cu in curves.items():
-        dense = _dense(cu) if cu.cand.kind != "switch" else None
+        dense = r2 = None
+        if cu.cand.kind != "switch":
+            dense = _dense(cu)
+            r2 = _sq_residuals(cu, data.y, data.s, dense)
         f = _fit(cu, data.y, data.s, everything, dense)
-        f["cv_chi2"] = cv_chi2(cu, data.y, data.s, data.folds, dense)
+        f["cv_chi2"] = cv_chi2(cu, data.y, data.s, data.folds, dense, r2)
         f["held_chi2"] = (
-            extrapolation_chi2(cu, data.y, data.s, data.train, dense) if data.held.any() else 0.0
+            extrapolation_chi2(cu, data.y, data.s, data.train, dense, r2)
+            if data.held.any()
+            else 0.0
         )
         fits[name] = f
         rows.append(_screen_row(cu.cand, f, data, chi_base, chi_held, delta_bic_min, k_accepted))
