@@ -8,6 +8,7 @@ from __future__ import annotations
 import time
 
 import numpy as np
+import polars as pl
 import pytest
 
 import thermobear as tb
@@ -64,15 +65,26 @@ def test_seed_b_spindle_states_what_is_missing(results):
     r = results["seed_b_spindle"]
     assert not r.passes
     # The plain statement: no candidate closes the axial growth (assumed spindle
-    # lengths, 81-103 um against the paper's 18-35 um) nor the vibration
-    # (G2.5 unbalance gives hundredths of mm/s against 18.92).
-    assert "axial_growth_um" in r.missing and "velocity_rms_mm_s" in r.missing
+    # lengths: 81-103 um against the paper's model's 18-35 um).
+    assert "axial_growth_um" in r.missing
     pts = r.points
     growth = pts.filter(pts["quantity"] == "axial_growth_um")
     assert np.all(growth["model_before"].to_numpy() > 2.0 * growth["value"].to_numpy())
+    # the rear outer ring agrees within 2 sigma, the front is colder than measured
     rear = pts.filter(pts["quantity"] == "temperature_c:rear_outer")
     assert abs(rear["model_before"][0] - rear["value"][0]) <= 2.0 * rear["sigma"][0]
+    front = pts.filter(pts["quantity"] == "temperature_c:front_outer")
+    assert front["model_before"][0] < front["value"][0] - 2.0 * front["sigma"][0]
+    # a G2.5 unbalance on this stiff spindle: hundredths of mm/s, not 18.92
+    vib = pts.filter(pts["quantity"] == "velocity_rms_mm_s")
+    assert vib["model_before"][0] < 0.1
     assert "text_18000" in r.holdout
+    # the paper's compensation preload / growth = its spring rate, 0.36 N/um; a
+    # calibrated softer spring only hides the growth gap, and the report says so
+    assert "implies a spring rate of 0.36 N/um" in r.notes[0]
+    assert "has no candidate" in r.notes[0]
+    ref = r.tables["reference"]
+    assert ref.height == 4 and np.all(ref["thermobear"].to_numpy() > 0.0)
 
 
 def test_seed_b_vibration_model_reproduces_its_numbers():
@@ -103,9 +115,8 @@ def test_displacement_vibration_is_omega_times_displacement():
 
 def test_seed_b_vibration_diagnosis_finds_runout_not_unbalance(results):
     r = results["seed_b_vibration"]
-    assert r.calibrated and r.calibrated[0]["name"] == "runout_um"
+    assert "runout_um" in r.verdict
     assert r.parameters_in_bounds
-    assert abs(r.points["model_after"][0] - 18.92) <= 2 * 0.946
     src = {row["source"]: row for row in r.tables["sources"].iter_rows(named=True)}
     # unbalance: far outside any spindle grade, and too steep in speed for the
     # paper's statement that the measured 1X at 12,000 rpm exceeds 7.53 mm/s
@@ -116,6 +127,22 @@ def test_seed_b_vibration_diagnosis_finds_runout_not_unbalance(results):
     # our thermal displacement alone falls short of the measured value
     assert src["thermal_displacement (our u_Tr)"]["v_18000rpm_mm_s"] < 18.92 - 2 * 0.946
     assert "cannot separate" in r.notes[0] and "one measured number" in r.missing
+
+
+def test_vibration_sources_are_linear_and_kinematic():
+    from thermobear.validation.vibration import VibrationSourceSpec
+
+    spec = VibrationSourceSpec(tb.Spindle.preset("seed-ceramic-spindle"))
+    cond = pl.DataFrame({"speed_rpm": [12_000.0, 18_000.0]})
+    q = "velocity_mm_s"
+    g1 = spec.with_setting(unbalance_grade=1.0).predict(cond)[q]
+    g4 = spec.with_setting(unbalance_grade=4.0).predict(cond)[q]
+    np.testing.assert_allclose(g4, 4.0 * g1, rtol=1e-9)  # forced response linear in U
+    eps = spec.with_setting(unbalance_grade=0.0, runout_um=10.0).predict(cond)[q]
+    omega = 2 * np.pi * cond["speed_rpm"].to_numpy() / 60.0
+    np.testing.assert_allclose(eps, omega * 10.0e-3, rtol=1e-12)  # omega x epsilon
+    th = spec.with_setting(["thermal_displacement"], unbalance_grade=0.0).predict(cond)[q]
+    assert 0.0 < th[0] < th[1]
 
 
 def test_validate_command_writes_report_quickly(tmp_path, capsys):

@@ -28,8 +28,8 @@ def closure_table(model: Any, measured: Any, d: Diagnosis) -> "polars.DataFrame"
     rows = _rows("baseline", float("nan"), _predict(model, _Setting(), cond, q), y, s, q)
     table = d.screening[0] if d.screening else pl.DataFrame()
     for r in table.iter_rows(named=True) if table.height else ():
-        c = pool.get(r["candidate"])
-        if c is None or r["value"] is None:
+        c = pool.get(r.get("candidate", ""))
+        if c is None or r.get("value") is None:  # a tie-only or unevaluated row
             continue
         st = _Setting().apply(c, float(r["value"]), dict(model.options))
         rows += _rows(c.name, float(r["value"]), _predict(model, st, cond, q), y, s, q)
