@@ -143,6 +143,8 @@ def test_vibration_sources_are_linear_and_kinematic():
     np.testing.assert_allclose(eps, omega * 10.0e-3, rtol=1e-12)  # omega x epsilon
     th = spec.with_setting(["thermal_displacement"], unbalance_grade=0.0).predict(cond)[q]
     assert 0.0 < th[0] < th[1]
+    with pytest.raises(tb.ConfigError, match="runout_um"):
+        spec.with_setting(runout_um=float("nan"))
 
 
 def test_validate_command_writes_report_quickly(tmp_path, capsys):

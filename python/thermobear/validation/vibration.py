@@ -58,12 +58,13 @@ class VibrationSourceSpec(ModelSpec):
                 raise ConfigError(f"invalid effect = {e!r}: known: thermal_displacement")
         self.spindle = spindle
         self.effects = tuple(sorted(set(effects)))
-        self.options = {"unbalance_grade": 2.5, "runout_um": 0.0, **options}
+        self.options = _checked({"unbalance_grade": 2.5, "runout_um": 0.0, **options})
         self._cache: dict = {}
 
     def with_setting(self, add_effects: Sequence[str] = (), **options: Any) -> ModelSpec:
+        """A copy with effects added and options replaced (shares the cache)."""
         new = VibrationSourceSpec(self.spindle, set(self.effects) | set(add_effects))
-        new.options = {**self.options, **options}
+        new.options = _checked({**self.options, **options})
         new._cache = self._cache
         return new
 
@@ -106,10 +107,14 @@ class VibrationSourceSpec(ModelSpec):
         return out + sensor_offset_candidates(quantities, self.quantities)
 
 
-def required_unbalance_grade(spec: VibrationSourceSpec, speed_rpm: float, v_mm_s: float) -> float:
-    """The ISO grade whose unbalance alone gives ``v_mm_s`` at ``speed_rpm``."""
-    unit, _ = spec._per_speed(np.array([float(speed_rpm)]))
-    return float(v_mm_s / unit[0])
+def _checked(options: dict) -> dict:
+    """The options, each a finite number >= 0 (ConfigError naming it)."""
+    for k, v in options.items():
+        if k not in ("unbalance_grade", "runout_um"):
+            raise ConfigError(f"invalid option = {k!r}: known: unbalance_grade, runout_um")
+        if not (isinstance(v, (int, float)) and np.isfinite(v) and v >= 0.0):
+            raise ConfigError(f"invalid {k} = {v!r}: a finite value >= 0")
+    return options
 
 
 def source_table(spec: VibrationSourceSpec, v_mm_s: float, speeds: Optional[Sequence] = None):
