@@ -26,7 +26,8 @@ _INCH_MM = 25.4
 def catalogue_bearing(row: dict, inner_conformity: float = 0.52) -> Bearing:
     """A catalogue bearing with the presets' assumed internal geometry:
     pitch diameter (bore + OD)/2, the standard inch ball (1/32 in steps)
-    nearest 0.3 (OD - bore), round(0.75 pi dm / D) balls, f_o = f_i + 0.01."""
+    nearest 0.3 (OD - bore), round(0.75 pi dm / D) balls, f_o = f_i + 0.01;
+    ``ball_material`` (a material preset name, default bearing steel)."""
     bore, od = float(row["bore_mm"]), float(row["outer_diameter_mm"])
     dm = 0.5 * (bore + od)
     step = _INCH_MM / 32.0
@@ -41,6 +42,7 @@ def catalogue_bearing(row: dict, inner_conformity: float = 0.52) -> Bearing:
         bore_mm=bore,
         outer_diameter_mm=od,
         width_mm=float(row["width_mm"]),
+        ball_material=row.get("ball_material"),
         name=str(row["name"]),
     )
 
