@@ -178,6 +178,11 @@ def run_vibration(data: dict) -> SetResult:
         pl.Series("paper_mm_s", [ref["simulated_1x_12000rpm_mm_s"]["value"],
                                  ref["coupled_simulation_18000rpm_mm_s"]["value"]]),
     )  # fmt: skip
+    ours = displacement_vibration(spec.spindle, story["speed_rpm"].to_numpy(), coupled=True)
+    story = story.with_columns(
+        ours["radial_displacement_um"].alias("thermobear_displacement_um"),
+        ours["velocity_mm_s"].alias("thermobear_seed_b_model_mm_s"),
+    )
     pool = {c.name: c for c in spec.candidate_list([_Q])}
     cal = [
         {"name": a["name"], "value": float(a["value"]), "lower": pool[a["name"]].lower,
