@@ -22,7 +22,7 @@ from thermobear.diagnosis.measurements import MAX_FOLDS, cv_folds, prepare_measu
 from thermobear.diagnosis.outliers import flag_outliers, loo_deviation
 from thermobear.diagnosis.screening import aicc_penalty, candidate_curves, cv_chi2, screen
 from thermobear.diagnosis.setting import _predict, _Setting
-from thermobear.diagnosis.statistics import _chi2
+from thermobear.diagnosis.statistics import _chi2, fisher_identifiability
 
 SPEEDS = np.linspace(4000.0, 16000.0, 6)
 BASE = Rig(["centrifugal"])
@@ -329,3 +329,33 @@ def test_joint_calibration_checks_its_input():
         tb.calibrate([(BASE, m)], ["extra_heat_w"], per_set=["drag_coefficient"])
     with pytest.raises(tb.ConfigError, match="model, measured"):
         tb.calibrate([BASE], ["extra_heat_w"])
+
+
+def test_fisher_identifiability_finds_the_blind_combination():
+    rng = np.random.default_rng(0)
+    a = rng.normal(size=(30, 1))
+    ortho = np.column_stack([np.arange(30) < 15, np.arange(30) >= 15]).astype(float)
+    cond, weak = fisher_identifiability(ortho, np.array([1.0, 5.0]))  # disjoint rows
+    assert cond == pytest.approx(1.0) and weak == set()
+    # the third parameter moves the residual exactly as twice the first
+    jac = np.column_stack([a[:, 0], rng.normal(size=30), 2.0 * a[:, 0]])
+    cond, weak = fisher_identifiability(jac, np.array([1.0, 1.0, 3.0]))
+    assert cond > 1e6 and weak == {0, 2}
+    cond, weak = fisher_identifiability(np.column_stack([a[:, 0], np.zeros(30)]), np.ones(2))
+    assert weak == {1}
+
+
+def test_without_a_sigma_column_the_intervals_stretch_with_the_scatter():
+    """No sigma given: the typical sigma is assumed and a note says so;
+    data twice as noisy give intervals about twice as wide (phi)."""
+    cond = conditions(SPEEDS, loads=(300.0, 800.0))
+    truth = BASE.with_setting(lubrication_factor_f0=1.2)
+    widths = []
+    for noise in (1.0, 2.0):
+        m = measured(truth, cond, 3, noise=noise).drop("sigma")
+        d = tb.diagnose(BASE, m, ["lubrication_factor_f0"], suggest=False, control=False)
+        assert any("no sigma column" in n for n in d.notes)
+        a = d.accepted[0]
+        assert a["lower_95"] <= 1.2 <= a["upper_95"]
+        widths.append(a["upper_95"] - a["lower_95"])
+    assert 1.5 < widths[1] / widths[0] < 2.6

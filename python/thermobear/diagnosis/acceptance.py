@@ -11,6 +11,7 @@ import numpy as np
 from ..errors import ThermobearError
 from .candidates import Candidate
 from .setting import _predict, _Setting
+from .statistics import fisher_identifiability
 from .ties import tie_members
 
 
@@ -20,7 +21,9 @@ def joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_option
     are accepted: an effect calibrated alone absorbs part of the next one.
     Intervals: +-1.96 standard errors from the Jacobian, (J^T J)^-1 scaled
     by phi = max(1, reduced chi^2) (the linearised profile: exact for the
-    additive offsets, a close approximation near the optimum otherwise).
+    additive offsets, a close approximation near the optimum otherwise);
+    ``identified``: False for a parameter the Fisher information does not
+    identify (:func:`~.statistics.fisher_identifiability`).
     Updates ``accepted`` in place; returns (setting, prediction) or None."""
     from scipy.optimize import least_squares
 
@@ -55,12 +58,14 @@ def joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_option
         return None
     phi = max(1.0, 2.0 * float(res.cost) / max(int(train.sum()) - len(idx), 1))
     se = np.sqrt(np.clip(np.diag(cov), 0.0, None) * phi)
+    _, weak = fisher_identifiability(res.jac, hi - lo)
     for k, i in enumerate(idx):
         accepted[i].update(
             value=float(res.x[k]),
             lower_95=float(max(lo[k], res.x[k] - 1.96 * se[k])),
             upper_95=float(min(hi[k], res.x[k] + 1.96 * se[k])),
             joint=True,
+            identified=k not in weak,
         )
     st = setting(res.x)
     return st, _predict(model, st, cond, quantity)

@@ -28,11 +28,11 @@ from ..errors import ConfigError, ThermobearError
 from .measurements import prepare_measurements
 from .protocol import check_spec
 from .setting import _predict, _Setting
+from .statistics import fisher_identifiability
 
 #: Most distinct candidates calibrated together.
 MAX_JOINT = 3
 _CHI2_95 = 3.841
-_COND_MAX = 1e6
 
 
 @dataclass
@@ -208,26 +208,6 @@ def _profile(prob: _Problem, theta, chi_min, j, thr) -> tuple[float, float]:
     return edges[0], edges[1]
 
 
-def _identifiability(prob: _Problem, jac) -> tuple[float, set]:
-    """(condition number of the scaled Fisher information in correlation
-    form, indices of the slots it does not identify)."""
-    js = jac * (prob.hi - prob.lo)[None, :]
-    f = js.T @ js
-    dg = np.diag(f)
-    weak = set(np.flatnonzero(dg <= 1e-12 * max(float(dg.max()), 1e-300)).tolist())
-    ok = np.array([i not in weak for i in range(len(dg))])
-    if ok.sum() == 0:
-        return float("inf"), weak
-    sub = f[np.ix_(ok, ok)]
-    corr = sub / np.sqrt(np.outer(np.diag(sub), np.diag(sub)))
-    w, v = np.linalg.eigh(corr)
-    cond = float(w[-1] / max(w[0], 1e-300))
-    idx = np.flatnonzero(ok)
-    for k in np.flatnonzero(w < w[-1] / _COND_MAX):
-        weak |= set(idx[np.abs(v[:, k]) > 0.3].tolist())
-    return cond, weak
-
-
 def calibrate(datasets, parameters: Sequence[str], per_set: Sequence[str] = ()) -> Calibration:
     """Calibrate up to three candidates (names from :func:`candidates` of
     each set's model: parameters, not switches) on several data sets at
@@ -245,7 +225,7 @@ def calibrate(datasets, parameters: Sequence[str], per_set: Sequence[str] = ()) 
     theta, chi_min, jac = _best_fit(prob)
     n, p = sum(d.n for d in data), len(slots)
     phi = max(1.0, chi_min / max(n - p, 1))
-    cond, weak = _identifiability(prob, jac)
+    cond, weak = fisher_identifiability(jac, prob.hi - prob.lo)
     intervals = [_profile(prob, theta, chi_min, j, _CHI2_95 * phi) for j in range(p)]
     for j, (a, b) in enumerate(intervals):
         if a <= prob.lo[j] and b >= prob.hi[j]:

@@ -14,20 +14,28 @@ this package):
    pairwise cosine similarity, look-alike pairs (|cos| > 0.95) and the
    quantity/speed (on a speed grid over all supported quantities) where
    the two best-matched fingerprints differ most;
-3. screening: each candidate added alone to the baseline and calibrated
-   within its bounds on the training points, scored by BIC = chi^2 + k ln n
-   and by chi^2 on held-out points (highest speeds or given runs);
-4. acceptance: delta-BIC >= 10 against the baseline, held-out chi^2
-   improved, the 95 % profile interval (chi^2 rise 3.84) inside the bounds
-   and excluding the null value, no rival within delta-BIC 2 (else a tie
-   set). Accepted effects join the baseline and the screening repeats while
-   the reduced chi^2 of the training residual fails the chi^2 test at 1 %;
+3. screening: each candidate added alone to the setting and calibrated
+   within its bounds on all points, scored by BIC = chi^2 + k ln n (n: all
+   points, k = 1 per candidate) and AICc, by the cross-validated chi^2
+   (folds of operating cells: a speed at a load in a run), and, reported
+   apart, by the extrapolation check (calibrated without the held-out
+   points -- highest speeds or given runs -- and scored on them);
+4. acceptance: delta-BIC >= 10 against the setting, the cross-validated
+   chi^2 improved, the 95 % profile interval (chi^2 rise 3.84 phi, phi =
+   max(1, reduced chi^2)) inside the bounds and excluding the null value,
+   no rival in a tie (:mod:`.ties`: within delta-BIC 2, or a lead noise
+   could produce; a rival at its bound is none). Accepted effects join the
+   setting and the screening repeats while the residual fails the chi^2
+   test at 1 %. Then the generic control (:mod:`.control`) is compared with
+   what was accepted, and the outlier audit (:mod:`.outliers`) runs on the
+   best fit: flagged points are left out and the search runs again;
 5. a verdict that says what each accepted candidate is: a missing effect
    (a registry switch or a term the baseline leaves out), a miscalibrated
    baseline input (f0, spin friction coefficient, cooling and ambient
    temperatures, housing material), or a measurement-side sensor offset;
-   a tie set; "no missing effect supported"; or "structured residual not
-   explained by any known effect";
+   a tie set; "unresolved" (a known effect the data cannot tell from an
+   unknown smooth one); "no missing effect supported"; or "structured
+   residual not explained by any known effect" -- and the outliers left out;
 6. the held-out gap before/after per quantity and speed band.
 
 Model specs: :class:`BearingModelSpec` (one bearing, quantities
@@ -286,6 +294,9 @@ def _conclude(s: _Search, full: MeasuredData, keep, z, pred0, baseline_audit) ->
 
 
 def _final_notes(s: _Search, full: MeasuredData, p_final: float) -> None:
+    weak = [a["name"] for a in s.accepted if a.get("identified") is False]
+    if weak:
+        s.notes.append("calibrated together, not identified by these data: " + ", ".join(weak))
     if s.accepted and p_final < 0.01:
         s.notes.append(f"residual after the accepted effects still above noise (p = {p_final:.2g})")
     if not full.held.any():
