@@ -21,8 +21,11 @@ class Diagnosis:
     value, 95 % interval, delta_bic, held-out chi^2, passes); ``accepted``:
     the accepted candidates with value and interval; ``tie``: names of a
     tie set; ``verdict``: text; ``gap``: held-out rms residual/sigma per
-    quantity and speed band before and after; ``points``: the measured rows
-    with ``model_before``, ``model_after``, ``heldout``, ``outlier``;
+    quantity and speed band before and after (after: the accepted
+    candidates calibrated without the held-out points, an extrapolation);
+    ``points``: the measured rows with ``model_before``, ``model_after``
+    (calibrated on all points), ``model_extrapolated`` (calibrated without
+    the held-out ones), ``heldout``, ``outlier``;
     ``ties``: one row per tie member (its value, interval, the gap after it
     alone, where to measure to separate it); ``tie_gap``: the gap table
     after each member; ``outliers``: the points the robust audit left out;

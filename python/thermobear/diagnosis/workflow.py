@@ -69,7 +69,7 @@ from .measurements import MeasuredData, prepare_measurements
 from .outliers import flag_outliers, outlier_table
 from .protocol import ModelSpec, check_spec
 from .result import Diagnosis
-from .screening import candidate_curves, screen, screening_table
+from .screening import _curve, _fit, candidate_curves, screen, screening_table
 from .setting import _predict, _Setting
 from .statistics import _chi2, noise_p_value
 from .ties import significant_rivals, tie_gap, tie_table
@@ -276,12 +276,14 @@ def _conclude(s: _Search, full: MeasuredData, keep, z, pred0, baseline_audit) ->
     out_table = outlier_table(full.df, ~keep, z, pred1)
     verdict = verdict_text(s.accepted, s.tie, p_final, s.unresolved, out_table)
     _final_notes(s, full, p_final)
-    r0f, r1f = full.residual(pred0), full.residual(pred1)
+    pred_x = _extrapolation_prediction(s, full) if full.held.any() else pred1
+    r0f, rxf = full.residual(pred0), full.residual(pred_x)
     gmask = (full.held if full.held.any() else np.ones(full.n, dtype=bool)) & keep
-    gap = gap_table(full.df, r0f, r1f, gmask)
+    gap = gap_table(full.df, r0f, rxf, gmask)
     points = full.df.with_columns(
         pl.Series("model_before", pred0),
         pl.Series("model_after", pred1),
+        pl.Series("model_extrapolated", pred_x),
         pl.Series("heldout", full.held),
         pl.Series("outlier", ~keep),
     )
@@ -291,6 +293,26 @@ def _conclude(s: _Search, full: MeasuredData, keep, z, pred0, baseline_audit) ->
         tie_gap=s.tie_gap, outliers=out_table,
         unresolved=[] if s.unresolved is None else s.unresolved[0],
     )  # fmt: skip
+
+
+def _extrapolation_prediction(s: _Search, full: MeasuredData) -> np.ndarray:
+    """The accepted candidates calibrated again without the held-out points
+    (each in its round's order on the training points, then together), and
+    their prediction of every row: the gap table's "after" on the held-out
+    points is then a true extrapolation."""
+    d = s.data
+    train = d.train
+    st, records = _Setting(), []
+    for c in s.accepted_cands:
+        cu = _curve(s.model, st, c, d.cond, d.quantity, s.base_options)
+        value = 1.0 if cu is None or c.kind == "switch" else _fit(cu, d.y, d.s, train)["value"]
+        st = st.apply(c, value, s.base_options)
+        records.append({"value": value})
+    joint = joint_refit(
+        s.model, s.accepted_cands, records, d.cond, d.quantity, d.y, d.s, train, s.base_options
+    )
+    st = joint[0] if joint is not None else st
+    return _predict(s.model, st, full.cond, full.quantity)
 
 
 def _final_notes(s: _Search, full: MeasuredData, p_final: float) -> None:
