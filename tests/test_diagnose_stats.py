@@ -92,7 +92,7 @@ def test_speed_growing_effect_found_although_the_top_speeds_hide_most_of_it():
     named = 0
     for seed in range(20):
         d = tb.diagnose(BASE, measured(truth, conditions(SPEEDS), seed), suggest=False)
-        named += [a["name"] for a in d.accepted] == ["drag_coefficient"]
+        named += [a["name"] for a in d.accepted + d.unresolved] == ["drag_coefficient"]
         named += "drag_coefficient" in d.tie  # f0 ~ n^(2/3) is a partial look-alike
         row = d.screening[0].filter(pl.col("candidate") == "drag_coefficient")
         assert row["heldout_chi2_after"][0] >= 0.0  # the extrapolation check, reported
@@ -137,14 +137,26 @@ def test_unknown_effect_is_not_named_as_a_known_one():
     assert named == 0
 
 
-def test_named_effect_beats_the_control_when_its_fingerprint_spans_quantities():
+def test_named_effect_against_the_controls():
+    """f0 off by 15 %: against the per-quantity control alone (no carrier
+    among the candidates) f0 is named -- one value for four quantities
+    beats two per quantity; with the extra-heat carrier (a heat source with
+    a free quadratic speed law) the data may not tell f0's own law from it
+    over 4000-16000 rpm: then the verdict is "unresolved", never another
+    name."""
     truth = BASE.with_setting(lubrication_factor_f0=1.15)
-    ok = sum(
-        [a["name"] for a in tb.diagnose(BASE, measured(truth, conditions(SPEEDS), s)).accepted]
-        == ["lubrication_factor_f0"]
-        for s in range(20)
-    )
-    assert ok >= 18
+    no_carrier = ["lubrication_factor_f0", "drag_coefficient", "ambient_temperature_offset_k"]
+    named = unresolved = 0
+    for s in range(20):
+        m = measured(truth, conditions(SPEEDS), s)
+        d = tb.diagnose(BASE, m, no_carrier, suggest=False)
+        named += [a["name"] for a in d.accepted] == ["lubrication_factor_f0"]
+        d = tb.diagnose(BASE, m, suggest=False)
+        assert [a["name"] for a in d.accepted + d.unresolved] == ["lubrication_factor_f0"] or (
+            "lubrication_factor_f0" in d.tie
+        ), d.verdict
+        unresolved += bool(d.unresolved)
+    assert named >= 18 and unresolved <= 12
 
 
 # -- item 4: outliers ---------------------------------------------------------------

@@ -35,8 +35,7 @@ def unresolved_text(records: list, gain: float, ctrl) -> str:
     names = " + ".join(a["name"] for a in records)
     return (
         f"unresolved: the data cannot tell a known effect ({names}, delta-BIC {gain:.1f}) "
-        f"from an unknown smooth one (a generic term in speed on {', '.join(ctrl.quantities)}, "
-        f"delta-BIC {ctrl.delta_bic:.1f})"
+        f"from an unknown smooth one ({ctrl.label}, delta-BIC {ctrl.delta_bic:.1f})"
     )
 
 

@@ -63,7 +63,7 @@ import numpy as np
 from .acceptance import accepted_record, joint_refit, select
 from .audit import audit, gap_table
 from .candidates import Candidate, candidate_pool, split_evaluable
-from .control import GenericControl, control_matches, control_row, generic_control
+from .control import CARRIERS, GenericControl, control_matches, control_row, generic_control
 from .identifiability import identifiability
 from .measurements import MeasuredData, prepare_measurements
 from .outliers import flag_outliers, outlier_table
@@ -112,6 +112,7 @@ class _Search:
     ties: Any = None
     tie_gap: Any = None
     unresolved: Optional[tuple[list, float, GenericControl]] = None
+    carriers: dict = field(default_factory=dict)
     screening: list = field(default_factory=list)
     fingerprints: Any = None
     lookalikes: Any = None
@@ -196,7 +197,7 @@ def _control_check(s: _Search, pred0: np.ndarray, margin: float) -> None:
     data cannot tell them from an unknown effect: they are withdrawn from
     ``accepted`` and reported as unresolved."""
     d = s.data
-    ctrl = generic_control(d, pred0)
+    ctrl = generic_control(d, pred0, s.carriers)
     k = len(s.accepted)
     gain = _chi2(d.residual(pred0)) - _chi2(d.residual(s.pred)) - k * np.log(d.n)
     if control_matches(ctrl, {"delta_bic": gain}, margin):
@@ -227,7 +228,9 @@ def _screening_round(s: _Search, rnd: int, rules: _Rules) -> bool:
         )  # fmt: skip
     k_acc = len(s.accepted_cands)
     rows, fits = screen(curves, d, chi_base, chi_held, rules.delta_bic_min, k_acc)
-    ctrl = generic_control(d, s.pred) if rules.control else None
+    if rnd == 0:  # the carriers' sensitivities around the baseline
+        s.carriers = {n: curves[n].slope() for n in CARRIERS if n in curves}
+    ctrl = generic_control(d, s.pred, s.carriers) if rules.control else None
     table_rows = rows + ([control_row(ctrl, chi_base)] if ctrl is not None else [])
     s.screening.append(screening_table(table_rows, rnd))
     best, rivals = select(rows, rules.tie_delta_bic)
