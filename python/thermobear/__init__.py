@@ -58,7 +58,7 @@ from .spindle import (
     spindle_grid,
     transient,
 )
-from .thermal import ThermalState, stiffness_curve, thermal_state
+from .thermal import ThermalState, lubrication_defaults, stiffness_curve, thermal_state
 
 __version__: str = _native.__version__
 
@@ -98,6 +98,7 @@ __all__ = [
     "BearingSolution",
     "Material",
     "ThermalState",
+    "lubrication_defaults",
     "stiffness_curve",
     "thermal_state",
     # gear dynamics

@@ -323,6 +323,7 @@ class Spindle:
         radial_load_n: float | None = None,
         effects: list[str] | None = None,
         spin_friction: float | None = None,
+        heat: dict[str, Any] | None = None,
     ) -> Spindle: ...
     @property
     def name(self) -> str: ...
@@ -371,7 +372,7 @@ def thermal_state(
     radial_n: float,
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
-    lubrication_factor_f0: float = 1.0,
+    lubrication_factor_f0: Optional[float] = None,
     spin_friction: float = 0.06,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
@@ -380,7 +381,13 @@ def thermal_state(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
-    churning_oil_fraction: float = 0.0,
+    churning_oil_fraction: Optional[float] = None,
+    heat_model: str = "palmgren",
+    lubrication: Optional[str] = None,
+    skf_series: Optional[str] = None,
+    sliding_friction_ehl: Optional[float] = None,
+    replenishment_krs: Optional[float] = None,
+    seal_moment_nmm: float = 0.0,
 ) -> dict[str, Any]: ...
 def thermal_stiffness_curve(
     bearing: Bearing,
@@ -389,7 +396,7 @@ def thermal_stiffness_curve(
     radial_n: float,
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
-    lubrication_factor_f0: float = 1.0,
+    lubrication_factor_f0: Optional[float] = None,
     spin_friction: float = 0.06,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
@@ -398,9 +405,16 @@ def thermal_stiffness_curve(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
-    churning_oil_fraction: float = 0.0,
+    churning_oil_fraction: Optional[float] = None,
+    heat_model: str = "palmgren",
+    lubrication: Optional[str] = None,
+    skf_series: Optional[str] = None,
+    sliding_friction_ehl: Optional[float] = None,
+    replenishment_krs: Optional[float] = None,
+    seal_moment_nmm: float = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
+def lubrication_defaults(lubrication: str, bearing_type: str) -> dict[str, Any]: ...
 def seed_a_network_links(
     bearing: Bearing,
     speed_rpm: float,
