@@ -481,6 +481,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(thermal_state, m)?)?;
     m.add_function(wrap_pyfunction!(thermal_stiffness_curve, m)?)?;
     m.add_function(wrap_pyfunction!(lubrication_defaults, m)?)?;
+    m.add_function(wrap_pyfunction!(skf_sliding_friction_ehl, m)?)?;
     Ok(())
 }
 
@@ -515,4 +516,11 @@ pub fn lubrication_defaults<'py>(
     d.set_item("oil_fraction_bounds", x.oil_fraction_bounds)?;
     d.set_item("replenishment_krs", x.replenishment_krs)?;
     Ok(d)
+}
+
+/// The SKF full-film sliding coefficient mu_EHL the heat model takes for a
+/// lubricant when none is given (docs/concepts/physics.md §9).
+#[pyfunction]
+pub fn skf_sliding_friction_ehl(lubricant: &str) -> f64 {
+    crate::thermal::friction::skf_mu_ehl_for_lubricant(lubricant)
 }
