@@ -251,15 +251,9 @@ def thermal_state(
     Z (pi/64) C_D X rho_oil D^2 dm^3 omega_c^3, C_D = 0.47, at the solved
     cage speed omega_c, which grows like speed^3; split like rolling heat;
     reported as ``churning_w`` and the ``churning`` row of
-    :attr:`ThermalState.heat`). Heat model (docs/concepts/physics.md §9):
-    ``heat_model="palmgren"`` (default) or ``"skf"`` (rolling + sliding +
-    seal moments of the SKF model; :attr:`ThermalState.heat` then has rows
-    rolling, sliding, seal, extra, churning); ``lubrication`` ("grease",
-    "oil-air", "oil-mist", "jet", "oil-bath"; None = the seeds' oil-air
-    with f0 = 1, X = 0) sets the defaults of ``lubrication_factor_f0`` and
-    ``churning_oil_fraction`` (see :func:`lubrication_defaults`); further
-    SKF keywords in :data:`HEAT_MODEL_OPTIONS` (``skf_series``,
-    ``sliding_friction_ehl``, ``replenishment_krs``, ``seal_moment_nmm``).
+    :attr:`ThermalState.heat`). ``heat_model`` ("palmgren" or "skf": heat
+    rows rolling, sliding, seal, extra, churning), ``lubrication`` (sets the
+    defaults of f0 and X) and the SKF keywords: :data:`HEAT_MODEL_OPTIONS`.
     The defaults reproduce the baseline. Returns a
     :class:`ThermalState`. Raises ``ThermalRunawayError`` when a node passes
     the lubricant's highest temperature or heat, temperatures and contact
@@ -275,26 +269,13 @@ def thermal_state(
                  "heat_model": None if heat_model == "palmgren" else heat_model,
                  "lubrication_factor_f0": lubrication_factor_f0,
                  "churning_oil_fraction": churning_oil_fraction}  # fmt: skip
-        given = {k: v for k, v in given.items() if v is not None}
-        return bearing._thermal_state(speed_rpm=speed_rpm, **given, **kwargs)
+        return _dispatch(bearing, speed_rpm, given, kwargs)
     heat = {k: kwargs.pop(k) for k in list(kwargs) if k in HEAT_MODEL_OPTIONS}
     _check_bearing_call(bearing, kwargs)
-    options = _model_kwargs(
-        lubricant,
-        lubrication_factor_f0,
-        spin_friction,
-        oil_air_temperature_c,
-        ambient_temperature_c,
-        housing_material,
-        raceway_control,
-        misalignment_rad,
-        extra_heat_w,
-        housing_conductance_scale,
-        churning_oil_fraction,
-        heat_model=heat_model,
-        lubrication=lubrication,
-        **heat,
-    )
+    args = (lubricant, lubrication_factor_f0, spin_friction, oil_air_temperature_c,
+            ambient_temperature_c, housing_material, raceway_control, misalignment_rad,
+            extra_heat_w, housing_conductance_scale, churning_oil_fraction)  # fmt: skip
+    options = _model_kwargs(*args, heat_model=heat_model, lubrication=lubrication, **heat)
     loads = (
         float(0.0 if axial_n is None else axial_n),
         float(0.0 if radial_n is None else radial_n),
@@ -303,6 +284,12 @@ def thermal_state(
         bearing._b, float(speed_rpm), *loads, _effects_arg(effects), **options
     )
     return ThermalState(raw)
+
+
+def _dispatch(machine: Any, speed_rpm: float, given: dict, kwargs: dict) -> Any:
+    """``machine._thermal_state`` with the arguments that were given."""
+    given = {k: v for k, v in given.items() if v is not None}
+    return machine._thermal_state(speed_rpm=speed_rpm, **given, **kwargs)
 
 
 def _check_bearing_call(bearing: Any, kwargs: dict) -> None:
