@@ -91,7 +91,9 @@ def test_skf_deep_groove_matches_the_catalogue_constant_friction_estimate():
 def test_drag_vanishes_with_the_oil_fraction_and_grows_with_speed(b7009):
     speeds = [6000.0, 12000.0, 18000.0]
     kw = dict(heat_model="skf", lubrication="jet")
-    dry = tb.thermal.thermal_stiffness_curve(b7009, speeds, 400.0, 0.0, churning_oil_fraction=0.0, **kw)
+    dry = tb.thermal.thermal_stiffness_curve(
+        b7009, speeds, 400.0, 0.0, churning_oil_fraction=0.0, **kw
+    )
     wet = tb.thermal.thermal_stiffness_curve(b7009, speeds, 400.0, 0.0, **kw)
     assert np.all(dry["churning_w"].to_numpy() == 0.0)
     assert np.all(np.diff(wet["churning_w"].to_numpy()) > 0.0)

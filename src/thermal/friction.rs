@@ -37,6 +37,7 @@
 //!     Kotzalas ([`super::heat::ball_drag_power_w`]) with the oil volume
 //!     fraction X of the lubrication method ([`Lubrication::defaults`]), in
 //!     both heat models.
+//!
 //!   The SKF sliding term already holds the sliding (spin) losses, so the
 //!   Palmgren spin heat is not added with this model.
 //!

@@ -71,9 +71,15 @@ class BearingModelSpec(ModelSpec):
         ``radial_load_scale``) and the scale of the level
         (``axial_load_scale@<level>``, ``radial_load_scale@<level>``)."""
         o = self.options
-        fa = axial_n * float(o["axial_load_scale"]) * float(o.get(f"axial_load_scale@{axial_n:g}", 1.0))
-        fr = radial_n * float(o["radial_load_scale"]) * float(
-            o.get(f"radial_load_scale@{radial_n:g}", 1.0)
+        fa = (
+            axial_n
+            * float(o["axial_load_scale"])
+            * float(o.get(f"axial_load_scale@{axial_n:g}", 1.0))
+        )
+        fr = (
+            radial_n
+            * float(o["radial_load_scale"])
+            * float(o.get(f"radial_load_scale@{radial_n:g}", 1.0))
         )
         return fa, fr
 

@@ -147,8 +147,18 @@ def heat_model_candidates(opts: dict, affects: tuple) -> list[Candidate]:
     base = str(opts.get("heat_model", "palmgren"))
     out = [
         Candidate(
-            f"heat_model:{hm}", "switch", "model", f"heat_model_is_{hm}", "1", 0.0, 1.0, 0.0,
-            desc, affects, option="heat_model", role="effect",
+            f"heat_model:{hm}",
+            "switch",
+            "model",
+            f"heat_model_is_{hm}",
+            "1",
+            0.0,
+            1.0,
+            0.0,
+            desc,
+            affects,
+            option="heat_model",
+            role="effect",
         )  # fmt: skip
         for hm, desc in HEAT_MODELS.items()
         if hm != base
@@ -158,8 +168,18 @@ def heat_model_candidates(opts: dict, affects: tuple) -> list[Candidate]:
             null = _skf_null(opts, opt)
             out.append(
                 Candidate(
-                    opt, "parameter", "model", opt, unit, min(lo, null), max(hi, null), null,
-                    desc, affects, option=opt, role="calibration",
+                    opt,
+                    "parameter",
+                    "model",
+                    opt,
+                    unit,
+                    min(lo, null),
+                    max(hi, null),
+                    null,
+                    desc,
+                    affects,
+                    option=opt,
+                    role="calibration",
                 )  # fmt: skip
             )
     return out
@@ -198,8 +218,19 @@ def sensor_gain_candidates(quantities: Sequence[str], table: dict) -> list:
         b = SENSOR_GAIN_BOUNDS["temperature" if q.startswith("temperature_c") else "other"]
         out.append(
             Candidate(
-                f"sensor_gain:{q}", "parameter", "measurement", "relative_gain", "1", -b, b, 0.0,
-                f"sensor gain error on {q}", (q,), offset=True, quantity=q, role="measurement",
+                f"sensor_gain:{q}",
+                "parameter",
+                "measurement",
+                "relative_gain",
+                "1",
+                -b,
+                b,
+                0.0,
+                f"sensor gain error on {q}",
+                (q,),
+                offset=True,
+                quantity=q,
+                role="measurement",
                 relative=True,
             )  # fmt: skip
         )
@@ -219,9 +250,18 @@ def load_level_candidates(
     lo, hi = LOAD_SCALE_BOUNDS
     return [
         Candidate(
-            f"{option}@{v:g}", "parameter", "model", f"{option}@{v:g}", "1", lo, hi, 1.0,
+            f"{option}@{v:g}",
+            "parameter",
+            "model",
+            f"{option}@{v:g}",
+            "1",
+            lo,
+            hi,
+            1.0,
             f"{what} of the {v:g} N level differs from the stated one by a factor",
-            quantities, option=f"{option}@{v:g}", role="calibration",
+            quantities,
+            option=f"{option}@{v:g}",
+            role="calibration",
         )  # fmt: skip
         for v in lv
     ]
@@ -334,7 +374,9 @@ def _levels(conditions: Any, names: Optional[Sequence[str]]) -> tuple[Any, int]:
         elif level and opt == "radial_load_scale":
             ra.append(float(level))
     n = max(len(ax), len(ra))
-    return pl.DataFrame({"axial_n": ax + [0.0] * (n - len(ax)), "radial_n": ra + [0.0] * (n - len(ra))}), 1
+    return pl.DataFrame(
+        {"axial_n": ax + [0.0] * (n - len(ax)), "radial_n": ra + [0.0] * (n - len(ra))}
+    ), 1
 
 
 def split_evaluable(pool: list) -> tuple[list, list[str]]:

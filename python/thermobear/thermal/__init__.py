@@ -3,7 +3,13 @@ thermo-mechanical state; stiffness against speed under the constant, speed
 and thermal models (crate: ``src/thermal``, bindings
 ``src/python/thermal.rs``)."""
 
-from .state import HEAT_MODEL_OPTIONS, THERMAL_EFFECTS, ThermalState, lubrication_defaults, thermal_state
+from .state import (
+    HEAT_MODEL_OPTIONS,
+    THERMAL_EFFECTS,
+    ThermalState,
+    lubrication_defaults,
+    thermal_state,
+)
 from .stiffness import stiffness_curve, thermal_stiffness_curve
 
 __all__ = [
