@@ -192,3 +192,19 @@ def test_spindle_preload_20_percent_high_is_named_preload_scale(spindle_base):
     for seed in SEEDS:
         d = tb.diagnose_spindle(spindle_base, _spindle_measured(truth, qs, seed))
         assert _named(d) == ["preload_scale"], d.verdict
+
+
+@pytest.mark.parametrize(
+    "setting,name",
+    [({"unbalance_grade": 5.0}, "unbalance_grade"), ({"heat_model": "skf"}, "heat_model:skf")],
+)
+def test_hidden_unbalance_and_heat_model_on_the_spindle(spindle_base, setting, name):
+    # a G5 rotor against the G2.5 baseline grows like the unbalance response
+    # (not like the omega x runout of the probe); the SKF-style heat model
+    # against Palmgren shows in the temperatures and the axial growth
+    qs = ["temperature_c:front_outer", "temperature_c:rear_outer", "velocity_rms_mm_s",
+          "axial_growth_um"]  # fmt: skip
+    truth = spindle_base.with_setting(**setting)
+    for seed in SEEDS:
+        d = tb.diagnose_spindle(spindle_base, _spindle_measured(truth, qs, seed))
+        assert _named(d) == [name], d.verdict

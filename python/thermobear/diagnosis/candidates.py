@@ -139,11 +139,12 @@ def _lubrication_bounds(model: Optional[ModelSpec]) -> dict:
     }
 
 
-def heat_model_candidates(opts: dict, affects: tuple) -> list[Candidate]:
+def heat_model_candidates(opts: dict, affects: tuple, skf_inputs: bool = True) -> list[Candidate]:
     """The other heat models (docs/concepts/physics.md §9) as switches
     (role "effect": a heat model the baseline leaves out) and, when the
     baseline uses the SKF-style model, its calibratable inputs (mu_EHL,
-    K_rs; bounds and sources in :data:`SKF_PARAMETERS`)."""
+    K_rs; bounds and sources in :data:`SKF_PARAMETERS`) unless
+    ``skf_inputs`` is false (a model without those options)."""
     base = str(opts.get("heat_model", "palmgren"))
     out = [
         Candidate(
@@ -163,7 +164,7 @@ def heat_model_candidates(opts: dict, affects: tuple) -> list[Candidate]:
         for hm, desc in HEAT_MODELS.items()
         if hm != base
     ]
-    if base == "skf":
+    if base == "skf" and skf_inputs:
         for opt, unit, lo, hi, desc in SKF_PARAMETERS:
             null = _skf_null(opts, opt)
             out.append(

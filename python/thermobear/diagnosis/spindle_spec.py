@@ -426,7 +426,7 @@ def _spindle_candidate_list(model: Optional[SpindleModelSpec], quantities: Seque
     out += _preload_candidates(opts, allq)
     out += _unbalance_candidates(opts)
     out += _preload_scale_and_runout_candidates(opts, allq)
-    out += heat_model_candidates(opts, allq)
+    out += heat_model_candidates(opts, allq, skf_inputs=False)
     out += sensor_offset_candidates(quantities, SPINDLE_QUANTITIES)
     out += sensor_gain_candidates(quantities, SPINDLE_QUANTITIES)
     return out
