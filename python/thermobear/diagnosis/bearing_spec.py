@@ -174,8 +174,9 @@ def _lubrication_options(bearing: Any, options: dict) -> dict:
 
 def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, dict]:
     """The baseline :class:`BearingModelSpec` of a system description
-    ([bearing], [model] effects, raceway_control, extra_heat_w and
-    housing_conductance_scale; the other thermal options take their
+    ([bearing], [model] effects, raceway_control, extra_heat_w,
+    housing_conductance_scale, churning_oil_fraction, heat_model and
+    lubrication; the other thermal options take their
     :func:`thermobear.thermal_state` defaults) and its [operating]
     table (loads for measurements that give none)."""
     from ..bearing import Bearing
@@ -190,5 +191,8 @@ def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, d
     for key in ("extra_heat_w", "housing_conductance_scale", "churning_oil_fraction"):
         if key in mdl:
             opts[key] = float(mdl[key])
+    for key in ("heat_model", "lubrication"):
+        if key in mdl:
+            opts[key] = str(mdl[key])
     spec = BearingModelSpec(Bearing.from_toml(text), effects=mdl.get("effects"), **opts)
     return spec, cfg.get("operating", {})
