@@ -82,7 +82,9 @@ def effects(kind: str | None = None) -> "polars.DataFrame":  # noqa: F821
     leave out, one row each (see :func:`thermobear.diagnosis.effect_registry`
     for the columns). ``kind="switch"``: the named effects for
     ``effects=[...]``; ``kind="term"``: the terms with a calibratable input
-    whose null value leaves them out (extra heat, housing conductance ...)."""
+    whose null value leaves them out (extra heat, housing conductance ...);
+    ``kind="model"``: alternative models chosen by an option
+    (``heat_model:skf``)."""
     return diagnosis.effect_registry(kind)
 
 

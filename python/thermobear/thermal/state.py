@@ -239,8 +239,9 @@ def thermal_state(
     For a :class:`~thermobear.Bearing`: the seed A network (oil-air
     ``oil_air_temperature_c``, ambient ``ambient_temperature_c``, housing
     of ``housing_material``, ``lubricant`` preset: "ISO VG 32", "ISO VG 68",
-    "e-drive ATF"), Palmgren friction with ``lubrication_factor_f0`` and
-    spin friction coefficient ``spin_friction``. Calibration inputs:
+    "e-drive ATF"), Palmgren friction with ``lubrication_factor_f0`` (None:
+    1, or the ``lubrication`` method's) and spin friction coefficient
+    ``spin_friction``. Calibration inputs:
     ``extra_heat_w`` (W, >= 0; heat at the bearing beyond the modelled
     friction, e.g. from a magnetic pull load, split like rolling heat
     1/4 : 1/2 : 1/4 to inner ring, balls, outer ring) and
