@@ -716,6 +716,16 @@ pub struct RegimeCell {
     pub amplitude_m: f64,
     /// Mean of the relative deflection extremes (m).
     pub mean_deflection_m: f64,
+    /// Largest Lyapunov exponent per mesh period, when computed \[1/period\].
+    pub lyapunov_per_period: Option<f64>,
+    /// Its standard error (batch means) \[1/period\].
+    pub lyapunov_stderr_per_period: Option<f64>,
+    /// 0-1 test K, when computed \[-\].
+    pub zero_one_k: Option<f64>,
+    /// Transient actually run \[mesh periods\].
+    pub transient_periods: usize,
+    /// False when the section was still converging at the transient cap.
+    pub settled: bool,
 }
 
 /// Regime map over error scale x torque x speed (speed fastest), every cell
@@ -787,6 +797,11 @@ pub fn regime_map(
                             impact: p.impact,
                             amplitude_m: p.amplitude(),
                             mean_deflection_m: 0.5 * (p.deflection_max + p.deflection_min),
+                            lyapunov_per_period: p.lyapunov_per_period,
+                            lyapunov_stderr_per_period: p.lyapunov_stderr_per_period,
+                            zero_one_k: p.zero_one_k,
+                            transient_periods: p.transient_periods,
+                            settled: p.settled,
                         })
                     })
                     .collect()
