@@ -330,7 +330,8 @@ def test_quick_demo_study_writes_its_tables(tmp_path) -> None:
     # The seed operating point: period-1 without impacts everywhere.
     assert set(seed["regime"]) == {"period-1"} and set(seed["impact"]) == {"no-impact"}
     d = pl.read_parquet(tmp_path / "gear_defaults.parquet")
-    assert d.filter(pl.col("parameter") == "backlash_um")["value"][0] == pytest.approx(100.0)
+    assert d.filter(pl.col("parameter") == "backlash_total_um")["value"][0] == pytest.approx(100.0)
+    assert d.filter(pl.col("parameter") == "half_backlash_um")["value"][0] == pytest.approx(50.0)
 
 
 def test_ctrl_c_interrupts_a_long_sweep(seed_system: tb.GearSystem) -> None:

@@ -216,7 +216,11 @@ pub fn helical_params_from_tables(
         ("transmission_error_m", &tables.transmission_error_m),
     ] {
         if t.len() < 2 {
-            return Err(Error::config(field, t.len(), "needs at least 2 samples per mesh period"));
+            return Err(Error::config(
+                field,
+                t.len(),
+                "needs at least 2 samples per mesh period",
+            ));
         }
     }
     for &k in &tables.normal_stiffness_n_per_m {
@@ -293,6 +297,30 @@ mod tests {
         let one = bearing_schedule(&b, BearingCase::Constant, &[], 2680.9, 1189.9, 1).unwrap();
         assert!((p.pinion.bearing.kx_n_per_m / one.at(0.0).0 - 2.0).abs() < 1e-12);
         assert!((p.gear.bearing.kz_n_per_m / one.at(0.0).1 - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn tables_path_equals_the_computed_path_and_names_bad_tables() {
+        let d = GearSystemDefaults::default();
+        let p = seed_a_params(&d).unwrap();
+        let pair = GearPair::preset("seed-electric-drive").unwrap();
+        let (kr, ka) = (p.pinion.bearing.kx_n_per_m, p.pinion.bearing.kz_n_per_m);
+        let tables = MeshTables {
+            normal_stiffness_n_per_m: p.mesh_stiffness_n_per_m.clone(),
+            transmission_error_m: p.transmission_error_m.clone(),
+        };
+        let q = helical_params_from_tables(&pair, tables.clone(), kr, ka, &d).unwrap();
+        assert_eq!(q, p);
+        let mut bad = tables.clone();
+        bad.normal_stiffness_n_per_m[5] = 0.0;
+        let e = helical_params_from_tables(&pair, bad, kr, ka, &d).unwrap_err();
+        assert!(e.to_string().contains("mesh_stiffness_n_per_m"), "{e}");
+        let short = MeshTables {
+            transmission_error_m: vec![0.0],
+            ..tables
+        };
+        let e = helical_params_from_tables(&pair, short, kr, ka, &d).unwrap_err();
+        assert!(e.to_string().contains("transmission_error_m"), "{e}");
     }
 
     #[test]

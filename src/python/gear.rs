@@ -540,7 +540,8 @@ impl PyGearSystem {
         Ok(())
     }
 
-    /// Mesh stiffness and TE tables the model uses, over one mesh period.
+    /// Mesh stiffness (normal) and TE tables the model uses, over one mesh
+    /// period: phases i / n, N/m, um and m.
     fn mesh_tables<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let p = self.sweep.pair.params();
         let n = p.mesh_stiffness_n_per_m.len();
@@ -559,6 +560,7 @@ impl PyGearSystem {
                 .collect::<Vec<_>>()
                 .into_pyarray(py),
         )?;
+        d.set_item("transmission_error_m", p.transmission_error_m.clone().into_pyarray(py))?;
         Ok(d)
     }
 }
@@ -886,7 +888,10 @@ fn sweep_dict<'py>(py: Python<'py>, r: &SweepResult, pinion_teeth: u32) -> PyRes
     )?;
     d.set_item("impact", pts.iter().map(|p| impact_label(p.impact)).collect::<Vec<_>>())?;
     d.set_item("lyapunov_per_mesh_period", opt(&|p| p.lyapunov_per_period))?;
-    d.set_item("lyapunov_stderr_per_mesh_period", opt(&|p| p.lyapunov_stderr_per_period))?;
+    d.set_item(
+        "lyapunov_stderr_per_mesh_period",
+        opt(&|p| p.lyapunov_stderr_per_period),
+    )?;
     let per_s = |v: Option<f64>, speed: f64| v.map(|l| l / mesh_period(pinion_teeth, speed));
     d.set_item("lyapunov_per_s", opt(&|p| per_s(p.lyapunov_per_period, p.speed)))?;
     d.set_item(
@@ -916,7 +921,11 @@ fn sweep_dict<'py>(py: Python<'py>, r: &SweepResult, pinion_teeth: u32) -> PyRes
     let mut dmax: Vec<Option<f64>> = vec![None; n];
     for t in r.transitions.iter().filter(|t| t.index + 1 < n) {
         let row = row_of(t.index);
-        let (from, to, s) = if down { (t.to, t.from, -1.0) } else { (t.from, t.to, 1.0) };
+        let (from, to, s) = if down {
+            (t.to, t.from, -1.0)
+        } else {
+            (t.from, t.to, 1.0)
+        };
         kind[row] = Some(transition_kind(from, to));
         dmin[row] = Some(s * t.min_change * um);
         dmax[row] = Some(s * t.max_change * um);
@@ -1073,11 +1082,13 @@ pub fn regime_map<'py>(
     d.set_item("amplitude_um", col(&|c| c.amplitude_m * 1e6).into_pyarray(py))?;
     d.set_item("mean_dte_um", col(&|c| c.mean_deflection_m * 1e6).into_pyarray(py))?;
     let z = model.pair.params().pinion_teeth;
-    let opt = |f: &dyn Fn(&crate::dynamics::RegimeCell) -> Option<f64>| -> Vec<Option<f64>> {
-        cells.iter().map(f).collect()
-    };
+    let opt =
+        |f: &dyn Fn(&crate::dynamics::RegimeCell) -> Option<f64>| -> Vec<Option<f64>> { cells.iter().map(f).collect() };
     d.set_item("lyapunov_per_mesh_period", opt(&|c| c.lyapunov_per_period))?;
-    d.set_item("lyapunov_stderr_per_mesh_period", opt(&|c| c.lyapunov_stderr_per_period))?;
+    d.set_item(
+        "lyapunov_stderr_per_mesh_period",
+        opt(&|c| c.lyapunov_stderr_per_period),
+    )?;
     d.set_item(
         "lyapunov_per_s",
         opt(&|c| c.lyapunov_per_period.map(|l| l / mesh_period(z, c.speed_rpm))),

@@ -131,7 +131,7 @@ class GearSystem:
     def _te_table(gear: GearPair, given: Any, points: int) -> Optional[list[float]]:
         if given is None:
             return None
-        cols = {"transmission_error_um": 1e-6, "transmission_error_m": 1.0}
+        cols = {"transmission_error_m": 1.0, "transmission_error_um": 1e-6}
         z = int(gear.geometry["pinion_teeth"])
         v = mesh_period_samples("transmission_error_um", cols, 1e-6, given, z, points)
         return [float(x) for x in v]
@@ -237,9 +237,9 @@ class GearSystem:
     def mesh_tables(self) -> "polars.DataFrame":  # noqa: F821
         """The mesh stiffness along the normal deflection and the static TE
         the model uses over one mesh period: ``mesh_phase`` (i / n),
-        ``normal_stiffness_n_per_m``, ``transmission_error_um``. Given back as
-        ``mesh_stiffness_n_per_m=`` / ``transmission_error_um=`` it rebuilds
-        the same model."""
+        ``normal_stiffness_n_per_m``, ``transmission_error_um``,
+        ``transmission_error_m``. Given back as ``mesh_stiffness_n_per_m=`` /
+        ``transmission_error_um=`` it rebuilds the same model bit for bit."""
         import polars as pl
 
         return pl.DataFrame({k: np.asarray(v) for k, v in self._s.mesh_tables().items()})

@@ -10,8 +10,11 @@ columns with ONE abscissa column
 * ``pinion_angle_deg`` [deg]: pinion rotation, 360 / z_p per mesh period,
 
 and the value column named with its unit (``normal_stiffness_n_per_m`` or
-``transverse_stiffness_n_per_m`` for the mesh stiffness,
-``transmission_error_um`` or ``transmission_error_m`` for the TE). The
+``transverse_stiffness_n_per_m``, converted with k_n = k_t / cos^2(beta), for
+the mesh stiffness; ``transmission_error_m`` or ``transmission_error_um``
+for the TE). When both of a pair are present they must agree (to 1e-9) and
+the first named is used, so the frames of :meth:`GearSystem.mesh_tables`
+and :meth:`GearPair.mesh_stiffness` can be given back directly. The
 abscissa must be strictly ascending and span at most one mesh period; a last
 point exactly one period after the first closes the period and must repeat
 the first value. Tables on the uniform phases ``i / n`` starting at phase 0
@@ -117,23 +120,38 @@ def mesh_period_samples(
             )
         out = v * callable_factor
     else:
-        cols = _columns(given)
-        have = [c for c in value_columns if c in cols]
-        if len(have) != 1:
-            raise _config_error(
-                f"invalid {field} = table with columns {cols}: give exactly one value column of "
-                f"{list(value_columns)}"
-            )
-        phase = _phases(field, given, pinion_teeth)
-        v = np.asarray(given[have[0]], dtype=float).ravel()
-        if v.shape != phase.shape:
-            raise _config_error(f"invalid {field} = table with columns of different lengths")
-        out = _uniform(field, phase, v, points)
-        if value_columns[have[0]] != 1.0:
-            out = out * value_columns[have[0]]
+        out = _table_values(field, value_columns, given, pinion_teeth, points)
     if not np.all(np.isfinite(out)):
         raise _config_error(f"invalid {field} = values {out.tolist()[:6]}...: must be finite")
     return out
+
+
+def _table_values(
+    field: str, value_columns: dict[str, float], given: Any, pinion_teeth: int, points: int
+) -> np.ndarray:
+    """SI samples of a table: the first value column present (in the order
+    of ``value_columns``) is used; any other present must agree with it to
+    1e-9 of the largest value."""
+    cols = _columns(given)
+    have = [c for c in value_columns if c in cols]
+    if not have:
+        raise _config_error(
+            f"invalid {field} = table with columns {cols}: give a value column of "
+            f"{list(value_columns)}"
+        )
+    phase = _phases(field, given, pinion_teeth)
+    si = [np.asarray(given[c], dtype=float).ravel() * value_columns[c] for c in have]
+    if any(v.shape != phase.shape for v in si):
+        raise _config_error(f"invalid {field} = table with columns of different lengths")
+    tol = 1e-9 * max(float(np.max(np.abs(si[0]))), 1e-300)
+    for c, v in zip(have[1:], si[1:], strict=False):
+        if np.max(np.abs(v - si[0])) > tol:
+            raise _config_error(
+                f"invalid {field} = table whose {c!r} disagrees with {have[0]!r}: give one"
+            )
+    raw = np.asarray(given[have[0]], dtype=float).ravel()
+    out = _uniform(field, phase, raw, points)
+    return out if value_columns[have[0]] == 1.0 else out * value_columns[have[0]]
 
 
 def backlash_half_um(
