@@ -345,8 +345,16 @@ def test_lyapunov_units(light: tb.GearSystem) -> None:
     np.testing.assert_allclose(
         per["lyapunov_stderr_per_mesh_period"], per["lyapunov_stderr_per_s"] / f, rtol=1e-12
     )
+    rm = tb.regime_map(light, [20.0], [s], transient_periods=100, record_periods=40)
+    assert rm["regime"][0] == "chaotic" and rm["settled"][0]
+    assert rm["lyapunov_per_mesh_period"][0] == pytest.approx(
+        rm["lyapunov_per_s"][0] / f_mesh, rel=1e-12
+    )
+    assert rm["lyapunov_per_mesh_period"][0] > 3 * rm["lyapunov_stderr_per_mesh_period"][0]
     with pytest.raises(tb.ConfigError, match="per"):
         tb.largest_lyapunov(light, s, per="hour")
+    with pytest.raises(tb.ConfigError, match="per"):
+        tb.largest_lyapunov("lorenz", per="mesh_period")
     with pytest.raises(tb.ConfigError, match="periods"):
         tb.largest_lyapunov(light, s, periods=10, block_periods=10)
 
@@ -382,6 +390,26 @@ def test_speeds_in_any_order_and_sweep_order_rows(light: tb.GearSystem) -> None:
             assert not r["jump_after"]
         assert kinds >= 1
         assert rows[-1]["transition_after"] is None and not rows[-1]["jump_after"]
+
+
+def test_regimes_of_bare_samples_take_the_period_settings() -> None:
+    """A period-20 sequence: period-20 with the default max_period 32,
+    non-periodic with max_period 16; a 2 % wobble matches only with a loose
+    tolerance."""
+    x = np.tile(np.arange(20.0), 3)
+    df = pl.DataFrame({"speed_rpm": np.full(60, 1.0), "dte_um": x})
+    assert tb.regimes(df)["regime"].to_list() == ["period-20"]
+    assert tb.regimes(df, max_period=16)["regime"].to_list() == ["non-periodic"]
+    wobble = pl.DataFrame(
+        {"speed_rpm": np.full(40, 1.0), "dte_um": 10.0 + 0.2 * (np.arange(40) % 2)}
+    )
+    wobble = wobble.vstack(pl.DataFrame({"speed_rpm": [2.0] * 40, "dte_um": [0.0] * 40}))
+    assert tb.regimes(wobble)["regime"].to_list() == ["period-2", "period-1"]
+    assert tb.regimes(wobble, period_rel_tol=0.05)["regime"].to_list() == ["period-1"]
+    with pytest.raises(tb.ConfigError, match="max_period"):
+        tb.regimes(df, max_period=0)
+    with pytest.raises(tb.ConfigError, match="period_rel_tol"):
+        tb.regimes(df, period_rel_tol=2.0)
 
 
 def test_regimes_report_transitions_and_unsettled_speeds() -> None:

@@ -237,9 +237,10 @@ def bifurcation_set(
     )
 
 
-def _per_speed_from_points(pts: Any, rel_tol: float = 1e-3, max_period: int = 16) -> Any:
-    """Per-speed regime from bare Poincare samples: the smallest n with
-    x[k+n] = x[k] (within rel_tol of the diagram's range) for all k."""
+def _per_speed_from_points(pts: Any, rel_tol: float, max_period: int) -> Any:
+    """Per-speed regime from bare Poincare samples: the smallest n <=
+    max_period (with at least 2 n samples) with x[k+n] = x[k] within
+    rel_tol of the diagram's range for all k."""
     import polars as pl
 
     span = float(pts["dte_um"].max() - pts["dte_um"].min()) or 1.0
@@ -247,7 +248,7 @@ def _per_speed_from_points(pts: Any, rel_tol: float = 1e-3, max_period: int = 16
     for (speed,), g in pts.group_by(["speed_rpm"], maintain_order=True):
         x = g["dte_um"].to_numpy()
         period = 0
-        for n in range(1, min(max_period, len(x) - 1) + 1):
+        for n in range(1, min(max_period, len(x) // 2) + 1):
             if np.all(np.abs(x[n:] - x[:-n]) <= rel_tol * span):
                 period = n
                 break
@@ -261,7 +262,7 @@ def _per_speed_from_points(pts: Any, rel_tol: float = 1e-3, max_period: int = 16
     )
 
 
-def _per_speed(pts: Any, keys: list[str]) -> Any:
+def _per_speed(pts: Any, keys: list[str], rel_tol: float, max_period: int) -> Any:
     """One row per (case, direction, speed) with the per-speed columns."""
     import polars as pl
 
@@ -275,7 +276,7 @@ def _per_speed(pts: Any, keys: list[str]) -> Any:
     parts = []
     groups = pts.group_by(keys, maintain_order=True) if keys else [((), pts)]
     for key, g in groups:
-        p = _per_speed_from_points(g)
+        p = _per_speed_from_points(g, rel_tol, max_period)
         for k, v in zip(keys, key if isinstance(key, tuple) else (key,), strict=False):
             p = p.with_columns(pl.lit(v).alias(k))
         parts.append(p)
@@ -329,7 +330,7 @@ def _ranges(g: Any, base: dict[str, Any]) -> list[dict[str, Any]]:
     return out
 
 
-def regimes(pts: Any) -> "polars.DataFrame":  # noqa: F821
+def regimes(pts: Any, *, max_period: int = 32, period_rel_tol: float = 1e-3) -> "polars.DataFrame":  # noqa: F821
     """Collapse a :func:`bifurcation` frame into speed ranges of one regime
     and impact, in sweep order (``"down"``: descending speed, so
     ``speed_from_rpm`` > ``speed_to_rpm``), per ``case``/``direction`` when
@@ -343,13 +344,19 @@ def regimes(pts: Any) -> "polars.DataFrame":  # noqa: F821
     was computed), ``unsettled_speeds`` (count) and ``unsettled_speeds_rpm`` (the
     speeds whose transient did not settle, comma-separated: provisional
     labels; per speed see the ``settled`` column of the sweep). A frame with only
-    ``speed_rpm`` and ``dte_um`` is classified by the period of its samples."""
+    ``speed_rpm`` and ``dte_um`` is classified by the period of its samples:
+    the smallest n <= ``max_period`` [mesh periods] (needing 2 n samples)
+    with every sample repeating after n within ``period_rel_tol`` [-] of the
+    frame's DTE range, else ``non-periodic``."""
     import polars as pl
 
     if "speed_rpm" not in pts.columns:
         raise _config_error("invalid pts = frame without 'speed_rpm'")
     keys = [k for k in ("case", "direction") if k in pts.columns]
-    per = _per_speed(pts, keys)
+    max_period = _count("max_period", max_period, 1)
+    if not 0.0 < float(period_rel_tol) < 1.0:
+        raise _config_error(f"invalid period_rel_tol = {period_rel_tol!r}: must lie in (0, 1)")
+    per = _per_speed(pts, keys, float(period_rel_tol), max_period)
     out = []
     groups = per.group_by(keys, maintain_order=True) if keys else [((), per)]
     for key, g in groups:
@@ -452,6 +459,11 @@ def largest_lyapunov(
     ``(exponent, standard error)`` in that unit (batch means over the
     blocks)."""
     if isinstance(system_or_name, str):
+        if per != "s" or return_stderr:
+            raise _config_error(
+                f"invalid per = {per!r} / return_stderr = {return_stderr!r}: a reference system "
+                "has no mesh period or blocks; its exponent is per unit time"
+            )
         return float(
             _native.largest_lyapunov_reference(system_or_name, time, step, transient_time, method)
         )

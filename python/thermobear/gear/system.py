@@ -99,6 +99,7 @@ class GearSystem:
         self.bearings_per_shaft = (
             None if bearing_stiffness_per == "shaft" else (bearing_count(bearings_per_shaft))
         )
+        self.bearing_stiffness_per = "shaft" if bearing_stiffness_per == "shaft" else "bearing"
         self.bearing_loads_n = {"axial_n": fa, "radial_n": fr}
         self._s = _native.GearSystem(
             gear._g,
@@ -182,7 +183,9 @@ class GearSystem:
     @property
     def params(self) -> dict[str, float]:
         """Model numbers (mesh stiffness mean/min/max in N/m, normal
-        direction; mesh damping N s/m; masses, radii, angles)."""
+        direction; mesh damping N s/m; masses, radii, angles; torque in N m,
+        negative for coast; ``te_amplitude_um``: the first-harmonic
+        amplitude, or half the peak-to-peak of a TE table)."""
         return dict(self._s.params())
 
     @property
