@@ -286,6 +286,7 @@ def test_settings_are_validated_by_name(seed: tb.GearSystem) -> None:
         ("zero_one_threshold", 1.2),
         ("jump_rel_amplitude", 0.0),
         ("jump_trend_factor", -1.0),
+        ("jump_window_speeds", 0),
         ("max_transient_periods", 50),  # below transient_periods = 100
     ]
     for name, value in bad:
@@ -324,6 +325,22 @@ def test_settings_reach_the_classifier(light: tb.GearSystem) -> None:
     fixed = _per_speed(_sweep(light, max_transient_periods=100))
     assert set(fixed["transient_periods"]) == {100}
     assert set(base["transient_periods"]) >= {100}
+
+
+def test_jump_settings_reach_the_detector(seed: tb.GearSystem) -> None:
+    """The steep amplitude change near 6,700 rpm at 100 N m is a jump on a
+    100 rpm grid; no step can exceed 2 x the larger amplitude, so
+    jump_rel_amplitude = 10 flags none, nor does a huge trend factor."""
+    speeds = np.arange(6500.0, 8001.0, 100.0)
+
+    def jumps(**kw) -> list:
+        per = _per_speed(_sweep(seed, speeds, **kw))
+        return per.filter(pl.col("jump_after"))["speed_rpm"].to_list()
+
+    assert jumps()
+    assert jumps(jump_rel_amplitude=10.0) == []
+    assert jumps(jump_trend_factor=1e6) == []
+    assert jumps(jump_window_speeds=3, jump_rel_amplitude=10.0) == []
 
 
 def test_lyapunov_units(light: tb.GearSystem) -> None:

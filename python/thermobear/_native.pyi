@@ -234,7 +234,8 @@ def bifurcation(
     max_period, period_rel_tol, converging_ratio, lyapunov_block_periods,
     lyapunov_max_periods, lyapunov_sigmas,
     lyapunov_threshold_per_mesh_period, zero_one_threshold,
-    jump_rel_amplitude, jump_trend_factor); speeds strictly ascending."""
+    jump_rel_amplitude, jump_trend_factor, jump_window_speeds); speeds
+    strictly ascending."""
 def bifurcation_many(
     systems: Sequence[GearSystem],
     directions: Sequence[str],

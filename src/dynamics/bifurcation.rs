@@ -121,6 +121,9 @@ pub struct SweepConfig {
     /// Periods per block of the Lyapunov estimate (the batch-means unit of
     /// its standard error) \[mesh periods\].
     pub lyapunov_block_periods: usize,
+    /// Neighbouring steps on each side whose median sets the local trend of
+    /// the jump test \[speeds\].
+    pub jump_window: usize,
 }
 
 impl Default for SweepConfig {
@@ -140,6 +143,7 @@ impl Default for SweepConfig {
             max_transient_periods: 1500,
             lyapunov_max_periods: 400,
             lyapunov_block_periods: 10,
+            jump_window: 5,
         }
     }
 }
@@ -352,7 +356,8 @@ fn finish(direction: SweepDirection, points: Vec<SpeedPoint>, cfg: &SweepConfig)
     let motions: Vec<Motion> = points.iter().map(|p| p.motion).collect();
     let lo: Vec<f64> = points.iter().map(|p| p.deflection_min).collect();
     let hi: Vec<f64> = points.iter().map(|p| p.deflection_max).collect();
-    let (jumps, transitions) = jumps_and_transitions(&motions, &lo, &hi, cfg.jump_rel, cfg.jump_trend_factor, 5);
+    let (jumps, transitions) =
+        jumps_and_transitions(&motions, &lo, &hi, cfg.jump_rel, cfg.jump_trend_factor, cfg.jump_window);
     let unsettled = (0..points.len()).filter(|&i| !points[i].settled).collect();
     SweepResult {
         direction,

@@ -708,7 +708,7 @@ fn direction_of(name: &str) -> Result<SweepDirection> {
 }
 
 /// Names of the classifier/sweep settings accepted in `settings`.
-pub const SETTING_NAMES: [&str; 11] = [
+pub const SETTING_NAMES: [&str; 12] = [
     "max_transient_periods",
     "max_period",
     "period_rel_tol",
@@ -720,6 +720,7 @@ pub const SETTING_NAMES: [&str; 11] = [
     "zero_one_threshold",
     "jump_rel_amplitude",
     "jump_trend_factor",
+    "jump_window_speeds",
 ];
 
 fn count_setting(name: &str, v: &Bound<'_, PyAny>, min: usize) -> PyResult<usize> {
@@ -817,6 +818,7 @@ fn sweep_config(
             }
             "jump_rel_amplitude" => cfg.jump_rel = positive(name, real_setting(name, &v)?).py_err()?,
             "jump_trend_factor" => cfg.jump_trend_factor = positive(name, real_setting(name, &v)?).py_err()?,
+            "jump_window_speeds" => cfg.jump_window = count_setting(name, &v, 1)?,
             other => {
                 return Err(Error::config(
                     "settings",

@@ -30,6 +30,7 @@ SETTING_NAMES = (
     "zero_one_threshold",
     "jump_rel_amplitude",
     "jump_trend_factor",
+    "jump_window_speeds",
 )
 
 #: Per-speed columns of a sweep (everything but the Poincare samples).
@@ -138,6 +139,7 @@ def bifurcation(
     zero_one_threshold: Optional[float] = None,
     jump_rel_amplitude: Optional[float] = None,
     jump_trend_factor: Optional[float] = None,
+    jump_window_speeds: Optional[int] = None,
 ) -> "polars.DataFrame":  # noqa: F821
     """Speed sweep (A Figs. 14-15). ``"up"``/``"down"`` carry the state from
     speed to speed (continuation), ``"independent"`` starts every speed from
@@ -177,7 +179,9 @@ def bifurcation(
     [1/mesh period] (1e-3); ``zero_one_threshold`` [-] 0-1 test K for chaos
     (0.5, used with >= 200 section points); ``jump_rel_amplitude`` [-] jump
     step relative to the amplitude (0.2); ``jump_trend_factor`` [-] jump
-    step relative to the local median step (5). Bad values raise ConfigError
+    step relative to the local median step (5), taken over
+    ``jump_window_speeds`` [speeds] neighbouring steps on each side (5).
+    Bad values raise ConfigError
     naming the setting. GIL released; Ctrl-C interrupts; ``progress(done,
     total)``."""
     _check_system(system)
@@ -213,6 +217,7 @@ def bifurcation_set(
     zero_one_threshold: Optional[float] = None,
     jump_rel_amplitude: Optional[float] = None,
     jump_trend_factor: Optional[float] = None,
+    jump_window_speeds: Optional[int] = None,
 ) -> "polars.DataFrame":  # noqa: F821
     """Every (case, direction) sweep over the same speeds in parallel
     (lock-step batches); the :func:`bifurcation` columns (each sweep in its
@@ -395,6 +400,7 @@ def regime_map(
     zero_one_threshold: Optional[float] = None,
     jump_rel_amplitude: Optional[float] = None,
     jump_trend_factor: Optional[float] = None,
+    jump_window_speeds: Optional[int] = None,
 ) -> "polars.DataFrame":  # noqa: F821
     """Motion regime over input torque x speed (x TE scale), every cell from
     its static state; speeds in any order (sorted ascending). Columns:
