@@ -81,8 +81,14 @@ def test_builtin_tables_round_trip_bit_for_bit(
 
 
 def test_callable_te_matches_the_builtin_harmonic(pair: tb.GearPair, seed: tb.GearSystem) -> None:
-    """A callable 2 um cos(2 pi phase) is the default first-harmonic TE."""
+    """A callable 2 um cos(2 pi phase) is the default first-harmonic TE
+    (also as a scalar function, called once per phase)."""
     sys = tb.GearSystem(pair, transmission_error_um=lambda ph: 2.0 * np.cos(2 * np.pi * ph))
+    scalar = tb.GearSystem(pair, transmission_error_um=lambda ph: 2.0 * math.cos(2 * math.pi * ph))
+    np.testing.assert_allclose(
+        scalar.mesh_tables()["transmission_error_um"], sys.mesh_tables()["transmission_error_um"],
+        rtol=0, atol=1e-14,
+    )  # fmt: skip
     np.testing.assert_allclose(
         sys.mesh_tables()["transmission_error_um"], seed.mesh_tables()["transmission_error_um"],
         rtol=0, atol=1e-14,
@@ -459,3 +465,18 @@ def test_regimes_report_transitions_and_unsettled_speeds() -> None:
     assert second["transition_at_end"] is None and second["unsettled_speeds"] == 0
     assert second["lyapunov_per_mesh_period_min"] == 0.2
     assert second["lyapunov_stderr_per_mesh_period_max"] == 0.05
+
+
+def test_bifurcation_plot_marks_unsettled_speeds() -> None:
+    df = pl.DataFrame(
+        {
+            "speed_rpm": [1.0, 1.0, 2.0, 2.0],
+            "dte_um": [1.0, 2.0, 3.0, 4.0],
+            "settled": [True, True, False, False],
+        }
+    )
+    ax = tb.plot.bifurcation(df)
+    sets = [c.get_offsets() for c in ax.collections]
+    assert [len(o) for o in sets] == [2, 2]
+    np.testing.assert_array_equal(sets[1][:, 1], [3.0, 4.0])
+    assert len(tb.plot.bifurcation(df, unsettled_color=None).collections) == 1

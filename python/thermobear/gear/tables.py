@@ -22,7 +22,8 @@ the first value. Tables on the uniform phases ``i / n`` starting at phase 0
 others are resampled once onto ``table_points`` uniform phases by periodic
 linear interpolation. A callable gets the numpy array of the
 ``table_points`` phases ``i / table_points`` (``mesh_phase``) and returns
-the values in the unit of the keyword (N/m along the normal deflection, um).
+the values in the unit of the keyword (N/m along the normal deflection, um);
+a function of one float (not taking arrays) is called once per phase.
 The Rust core interpolates the uniform samples (periodic Catmull-Rom).
 """
 
@@ -106,24 +107,35 @@ def mesh_period_samples(
     name -> factor to SI) or a callable (its values times
     ``callable_factor``)."""
     if callable(given):
-        grid = np.arange(points) / points
-        try:
-            v = np.asarray(given(grid), dtype=float)
-        except Exception as e:
-            raise _config_error(
-                f"invalid {field} = {given!r}: calling it on mesh_phase failed: {e}"
-            ) from e
-        if v.shape != grid.shape:
-            raise _config_error(
-                f"invalid {field} = {given!r}: returned shape {v.shape}, need {grid.shape} "
-                "(one value per mesh_phase)"
-            )
-        out = v * callable_factor
+        out = _sample_callable(field, given, points) * callable_factor
     else:
         out = _table_values(field, value_columns, given, pinion_teeth, points)
     if not np.all(np.isfinite(out)):
         raise _config_error(f"invalid {field} = values {out.tolist()[:6]}...: must be finite")
     return out
+
+
+def _sample_callable(field: str, f: Callable[..., Any], points: int) -> np.ndarray:
+    """``f`` on the phases i / points: called once with the array, or, if it
+    does not take arrays, once per phase."""
+    grid = np.arange(points) / points
+    try:
+        v = np.asarray(f(grid), dtype=float)
+    except Exception:
+        v = None
+    if v is None or v.shape == ():
+        try:
+            v = np.array([float(f(float(p))) for p in grid])
+        except Exception as e:
+            raise _config_error(
+                f"invalid {field} = {f!r}: calling it on mesh_phase failed: {e}"
+            ) from e
+    if v.shape != grid.shape:
+        raise _config_error(
+            f"invalid {field} = {f!r}: returned shape {v.shape}, need {grid.shape} "
+            "(one value per mesh_phase)"
+        )
+    return v
 
 
 def _table_values(
