@@ -236,6 +236,7 @@ def bifurcation(
     lyapunov_threshold_per_mesh_period, zero_one_threshold,
     jump_rel_amplitude, jump_trend_factor, jump_window_speeds); speeds
     strictly ascending."""
+
 def bifurcation_many(
     systems: Sequence[GearSystem],
     directions: Sequence[str],
@@ -277,6 +278,7 @@ def largest_lyapunov_gear(
     """``lyapunov_per_s``, ``lyapunov_stderr_per_s``,
     ``lyapunov_per_mesh_period``, ``lyapunov_stderr_per_mesh_period``,
     ``blocks``, ``mesh_period_s``."""
+
 def gear_bearing_schedule(
     bearing: Bearing,
     case: str,
