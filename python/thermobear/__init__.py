@@ -15,10 +15,23 @@ or below; ``tests/test_layout.py`` checks it):
   ``rotor`` -- the machines;
 * ``diagnosis`` -- model against measurements, step by step;
 * ``plot`` -- figures, one module per topic;
-* ``studies`` (the seed studies, ``thermobear demo``) and ``cli`` on top.
+* ``studies`` (the seed studies, ``thermobear demo``) and ``validation``
+  (published data sets, ``thermobear validate``), ``cli`` on top.
 """
 
-from . import _native, bearing, config, diagnosis, errors, gear, plot, rotor, spindle, thermal
+from . import (
+    _native,
+    bearing,
+    config,
+    diagnosis,
+    errors,
+    gear,
+    plot,
+    rotor,
+    spindle,
+    thermal,
+    validation,
+)
 from .bearing import Bearing, BearingSolution, Material
 from .config import load_config, seed_config, seed_config_names
 from .diagnosis import (
@@ -59,6 +72,7 @@ from .spindle import (
     transient,
 )
 from .thermal import ThermalState, stiffness_curve, thermal_state
+from .validation import validate
 
 __version__: str = _native.__version__
 
@@ -83,6 +97,7 @@ __all__ = [
     "rotor",
     "diagnosis",
     "plot",
+    "validation",
     # errors
     "ConfigError",
     "ConvergenceError",
@@ -133,4 +148,6 @@ __all__ = [
     "load_spindle_measurements",
     "seed_b_measurements",
     "spindle_candidates",
+    # validation against published data
+    "validate",
 ]
