@@ -310,8 +310,10 @@ def screening_table(rows: list, rnd: int) -> Any:
 
     if not rows:
         return pl.DataFrame()
-    floats = ("value", "lower_95", "upper_95", "null", "chi2", "delta_bic", "delta_aicc",
-              "cv_chi2_before", "cv_chi2_after", "heldout_chi2_before", "heldout_chi2_after")  # fmt: skip
+    floats = (
+        "value", "lower_95", "upper_95", "null", "chi2", "delta_bic", "delta_aicc",
+        "cv_chi2_before", "cv_chi2_after", "heldout_chi2_before", "heldout_chi2_after",
+    )  # fmt: skip
     table = pl.DataFrame(rows).with_columns(
         [pl.col(c).cast(pl.Float64) for c in floats if c in rows[0]]
     )
