@@ -177,17 +177,13 @@ def test_hidden_spin_friction_switch_named(bearing, full_effects, baseline):
     base = D.BearingModelSpec(bearing, effects=[e for e in full_effects if e != "spin_friction"])
     ds = [tb.diagnose(base, _measured(baseline, 3000 + s)) for s in range(20)]
     named = sum([a["name"] for a in d.accepted] == ["spin_friction"] for d in ds)
-    # spin friction, churning and f0 are look-alikes (cosine ~0.99): a tie
-    # that contains the true effect is honest, a wrong single name is not.
-    # (Issue 12: a lead of the best that noise could produce -- below 1.645
-    # standard deviations -- makes a tie, so ties are more frequent than the
-    # 5 of 20 this test allowed before; the standard is right name or a tie
-    # containing it.) In each tie, spin friction alone closes the gap.
-    tied = [d for d in ds if "spin_friction" in d.tie]
+    # spin friction and churning are look-alikes (cosine ~0.99): a tie that
+    # contains the true effect is honest, a wrong single name is not; so is
+    # "unresolved" (issue 12: spin friction heat, like an unknown heat source
+    # with a smooth speed law, the carrier control)
+    tied = sum("spin_friction" in d.tie + [a["name"] for a in d.unresolved] for d in ds)
     wrong = sum(bool(d.accepted) and d.accepted[0]["name"] != "spin_friction" for d in ds)
-    assert named + len(tied) >= 19 and wrong <= 1
-    for d in tied:
-        assert d.ties.filter(pl.col("candidate") == "spin_friction")["p_noise"][0] > 0.01
+    assert named >= 15 and named + tied >= 19 and wrong <= 1
 
 
 def test_effect_outside_registry_is_reported_as_unexplained(baseline):

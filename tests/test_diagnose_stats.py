@@ -68,7 +68,8 @@ def test_cv_chi2_equals_brute_force_refits():
         chi = [_chi2(((d.y - cu.at(np.array([v]))[0]) / d.s)[~test]) for v in grid]
         v = grid[int(np.argmin(chi))]
         brute += _chi2(((d.y - cu.at(np.array([v]))[0]) / d.s)[test])
-    assert cv_chi2(cu, d.y, d.s, d.folds) == pytest.approx(brute, rel=1e-9)
+    total, tested = cv_chi2(cu, d.y, d.s, d.folds)
+    assert total == pytest.approx(brute, rel=1e-9) and tested == len(np.unique(d.folds))
 
 
 def test_information_criteria_on_all_points():

@@ -22,6 +22,14 @@ import numpy as np
 #: Parameters of the generic term of one quantity (and of a carrier's law).
 GENERIC_PARAMETERS = 2
 
+#: How far below the named candidates' delta-BIC the control may stay and
+#: still match them: 0 -- it must explain the data at least as well after
+#: BIC's charge for its extra parameters. (A named effect the control nests,
+#: e.g. a probe runout ~ speed on one quantity, is then called unresolved
+#: only when noise gives the control's extra parameter more than ln n of
+#: chi^2: about 4 % of data sets for n ~ 50.)
+CONTROL_MARGIN = 0.0
+
 #: Additive model inputs that carry the carrier control (see the module
 #: docstring): candidate names; a model whose candidates have none of them
 #: has only the per-quantity control.
@@ -122,6 +130,7 @@ def control_row(ctrl: GenericControl, chi_base: float) -> dict:
         "delta_aicc": None,
         "cv_chi2_before": chi_base,
         "cv_chi2_after": None,
+        "cv_folds": None,
         "heldout_chi2_before": None,
         "heldout_chi2_after": None,
         "passes": False,

@@ -172,20 +172,30 @@ def _sq_residuals(curve: _Curve, y, s, dense=None) -> np.ndarray:
     return ((y - p) / s) ** 2
 
 
-def cv_chi2(curve: _Curve, y, s, folds, dense=None, r2=None) -> float:
-    """Cross-validated chi^2 of a candidate: for each fold, the parameter
-    calibrated on the other folds (dense-grid minimum) predicts the fold;
-    the sum over the folds. A switch has no parameter: its chi^2."""
+def cv_chi2(curve: _Curve, y, s, folds, dense=None, r2=None) -> tuple[float, int]:
+    """Cross-validated chi^2 of a candidate and the number of folds that
+    test it: for each fold, the parameter calibrated on the other folds
+    (dense-grid minimum) predicts the fold; the sum over the folds. A fold
+    tests the candidate only when the candidate moves both its training
+    and its held-out points; an untested fold keeps the setting's chi^2
+    (the null value's). A switch has no parameter: its chi^2, every fold."""
     if curve.cand.kind == "switch":
-        return _chi2((y - curve.preds[-1]) / s)
+        return _chi2((y - curve.preds[-1]) / s), len(np.unique(folds))
+    _, p = dense if dense is not None else _dense(curve)
     r2 = _sq_residuals(curve, y, s, dense) if r2 is None else r2
-    ids = np.unique(folds, return_inverse=True)[1]
-    per_fold = np.zeros((r2.shape[0], int(ids.max()) + 1))
-    for f in range(per_fold.shape[1]):
-        per_fold[:, f] = r2[:, ids == f].sum(axis=1)
-    train = per_fold.sum(axis=1)[:, None] - per_fold
-    best = np.argmin(train, axis=0)
-    return float(per_fold[best, np.arange(per_fold.shape[1])].sum())
+    r2_null = ((y - curve.at(np.array([curve.cand.null]))[0]) / s) ** 2
+    moves = np.ptp(p, axis=0) / s > 1e-9
+    total, tested = 0.0, 0
+    for f in np.unique(folds):
+        held = folds == f
+        train = ~held
+        if moves[train].any() and moves[held].any():
+            i = int(np.argmin(r2[:, train].sum(axis=1)))
+            total += float(r2[i, held].sum())
+            tested += 1
+        else:
+            total += float(r2_null[held].sum())
+    return total, tested
 
 
 def extrapolation_chi2(curve: _Curve, y, s, train, dense=None, r2=None) -> float:
@@ -259,7 +269,7 @@ def screen(curves, data, chi_base, chi_held, delta_bic_min, k_accepted: int = 0)
             dense = _dense(cu)
             r2 = _sq_residuals(cu, data.y, data.s, dense)
         f = _fit(cu, data.y, data.s, everything, dense)
-        f["cv_chi2"] = cv_chi2(cu, data.y, data.s, data.folds, dense, r2)
+        f["cv_chi2"], f["cv_folds"] = cv_chi2(cu, data.y, data.s, data.folds, dense, r2)
         f["held_chi2"] = (
             extrapolation_chi2(cu, data.y, data.s, data.train, dense, r2)
             if data.held.any()
@@ -281,7 +291,9 @@ def _screen_row(c, f, data, chi_base, chi_held, delta_bic_min, k_accepted=0) -> 
     dbic = chi_base - f["chi2"] - k * np.log(n)
     daicc = chi_base - f["chi2"] + aicc_penalty(k_accepted, n) - aicc_penalty(k_accepted + k, n)
     interval_ok = c.kind == "switch" or (f["excludes_null"] and not f["at_bound"])
-    cv_ok = f["cv_chi2"] < chi_base
+    # no fold can test a candidate whose effect sits in one operating cell:
+    # the cross-validation has nothing to say, BIC and the interval decide
+    cv_ok = f["cv_chi2"] < chi_base or f["cv_folds"] == 0
     return {
         "candidate": c.name,
         "kind": c.kind,
@@ -297,6 +309,7 @@ def _screen_row(c, f, data, chi_base, chi_held, delta_bic_min, k_accepted=0) -> 
         "delta_aicc": daicc,
         "cv_chi2_before": chi_base,
         "cv_chi2_after": f["cv_chi2"],
+        "cv_folds": f["cv_folds"],
         "heldout_chi2_before": chi_held,
         "heldout_chi2_after": f["held_chi2"],
         "passes": bool(dbic >= delta_bic_min and cv_ok and interval_ok),

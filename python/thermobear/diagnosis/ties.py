@@ -29,30 +29,31 @@ def tie_members(rows: list, best: dict, margin: float) -> list[str]:
     ]
 
 
-#: One-sided 95 % normal quantile: a best candidate whose chi^2 lead over
-#: a rival is below this many standard deviations of that lead's noise is
-#: not significantly better.
+#: One-sided 95 % normal quantile: a lead the rival, were it the truth,
+#: would give the best by chance more often than 5 % is no lead.
 LEAD_Z = 1.645
 
 
 def lead_z(gap: float, pred_best: np.ndarray, pred_rival: np.ndarray, s: np.ndarray) -> float:
-    """The best candidate's lead over a rival in units of its noise: with
-    Gaussian errors of known sigma, chi^2_rival - chi^2_best changes with
-    the noise eps by 2 sum eps_i (p_best,i - p_rival,i) / s_i^2, a normal
-    term of standard deviation 2 D, D = ||(p_best - p_rival) / s|| (the
-    distance of the two fits in sigma). ``gap``: the delta-BIC lead (the
-    chi^2 lead when both have one parameter). +inf when the fits coincide
-    (then the delta-BIC margin alone decides)."""
+    """The best candidate's lead over a rival, tested against the rival
+    being the truth. With Gaussian errors of known sigma, the chi^2 lead
+    chi^2_rival - chi^2_best has, if the rival were true, mean -D^2 and
+    standard deviation 2 D, D = ||(p_best - p_rival) / s|| the distance of
+    the two fits in sigma (the noise enters through 2 sum eps_i (p_best,i -
+    p_rival,i) / s_i^2). Returns (gap + D^2) / (2 D), ``gap`` the delta-BIC
+    lead (the chi^2 lead when both have one parameter); +inf when the fits
+    coincide (then the delta-BIC margin alone decides)."""
     dist = float(np.linalg.norm((pred_best - pred_rival) / s))
-    return float("inf") if dist <= 1e-12 else gap / (2.0 * dist)
+    return float("inf") if dist <= 1e-12 else (gap + dist * dist) / (2.0 * dist)
 
 
 def significant_rivals(rows, fits, best, data, exclude) -> list[str]:
     """Rivals beyond the delta-BIC margin that the best candidate does not
     beat significantly: a named candidate (not at a bound, delta-BIC > 0)
-    whose delta-BIC lead stays below :data:`LEAD_Z` standard deviations of
-    its noise (:func:`lead_z`). If the rival were the truth, the best would
-    lead it by that much by chance in at most 5 % of the data sets."""
+    whose delta-BIC lead the rival, were it the truth, would give the best
+    by chance in more than 5 % of the data sets (:func:`lead_z` below
+    :data:`LEAD_Z`). This matters only for fits less than 3.3 sigma apart,
+    where the margin of 2 can be crossed by noise."""
     pb = fits[best["candidate"]]["pred"]
     out = []
     for row in rows:

@@ -63,7 +63,14 @@ import numpy as np
 from .acceptance import accepted_record, joint_refit, select
 from .audit import audit, gap_table
 from .candidates import Candidate, candidate_pool, split_evaluable
-from .control import CARRIERS, GenericControl, control_matches, control_row, generic_control
+from .control import (
+    CARRIERS,
+    CONTROL_MARGIN,
+    GenericControl,
+    control_matches,
+    control_row,
+    generic_control,
+)
 from .identifiability import identifiability
 from .measurements import MeasuredData, prepare_measurements
 from .outliers import flag_outliers, outlier_table
@@ -186,16 +193,17 @@ def _search(model, data: MeasuredData, pool, outside, rules: _Rules) -> _Search:
         if not _screening_round(s, rnd, rules):
             break
     if rules.control and s.accepted:
-        _control_check(s, pred, rules.tie_delta_bic)
+        _control_check(s, pred, CONTROL_MARGIN)
     return s
 
 
 def _control_check(s: _Search, pred0: np.ndarray, margin: float) -> None:
     """The generic control against what the rounds accepted: when a generic
-    smooth term per quantity, fitted to the baseline's residual, gains as
-    much BIC as the accepted candidates together (within ``margin``), the
-    data cannot tell them from an unknown effect: they are withdrawn from
-    ``accepted`` and reported as unresolved."""
+    smooth term (:func:`generic_control`), fitted to the baseline's
+    residual, gains as much BIC as the accepted candidates together (no
+    more than ``margin`` below), the data cannot tell them from an unknown
+    effect: they are withdrawn from ``accepted`` and reported as
+    unresolved."""
     d = s.data
     ctrl = generic_control(d, pred0, s.carriers)
     k = len(s.accepted)
@@ -239,7 +247,7 @@ def _screening_round(s: _Search, rnd: int, rules: _Rules) -> bool:
     rivals += significant_rivals(rows, fits, best, d, set(rivals))
     if rivals:
         s.tie = [best["candidate"]] + rivals
-        if ctrl is not None and control_matches(ctrl, best, rules.tie_delta_bic):
+        if ctrl is not None and control_matches(ctrl, best, CONTROL_MARGIN):
             s.tie.append("generic_control")
         named = [m for m in s.tie if m in fits]
         s.ties = tie_table(named, rows, fits, curves, s, rules.envelope, rules.suggest)
