@@ -14,11 +14,24 @@ or below; ``tests/test_layout.py`` checks it):
   thermal network, stiffness against speed; ``gear``, ``spindle``,
   ``rotor`` -- the machines;
 * ``diagnosis`` -- model against measurements, step by step;
+* ``study`` -- design studies: grids in chunks, parquet, resume, Dask;
 * ``plot`` -- figures, one module per topic;
 * ``studies`` (the seed studies, ``thermobear demo``) and ``cli`` on top.
 """
 
-from . import _native, bearing, config, diagnosis, errors, gear, plot, rotor, spindle, thermal
+from . import (
+    _native,
+    bearing,
+    config,
+    diagnosis,
+    errors,
+    gear,
+    plot,
+    rotor,
+    spindle,
+    study,
+    thermal,
+)
 from .bearing import Bearing, BearingSolution, Material
 from .config import load_config, seed_config, seed_config_names
 from .diagnosis import (
@@ -58,7 +71,8 @@ from .spindle import (
     spindle_grid,
     transient,
 )
-from .thermal import ThermalState, stiffness_curve, thermal_state
+from .study import Study, load_study
+from .thermal import ThermalState, stiffness_curve, thermal_state, thermal_state_many
 
 __version__: str = _native.__version__
 
@@ -82,6 +96,7 @@ __all__ = [
     "spindle",
     "rotor",
     "diagnosis",
+    "study",
     "plot",
     # errors
     "ConfigError",
@@ -100,6 +115,7 @@ __all__ = [
     "ThermalState",
     "stiffness_curve",
     "thermal_state",
+    "thermal_state_many",
     # gear dynamics
     "GearPair",
     "GearSystem",
@@ -133,4 +149,7 @@ __all__ = [
     "load_spindle_measurements",
     "seed_b_measurements",
     "spindle_candidates",
+    # design studies
+    "Study",
+    "load_study",
 ]

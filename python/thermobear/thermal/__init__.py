@@ -3,6 +3,7 @@ thermo-mechanical state; stiffness against speed under the constant, speed
 and thermal models (crate: ``src/thermal``, bindings
 ``src/python/thermal.rs``)."""
 
+from .batch import thermal_state_many
 from .state import THERMAL_EFFECTS, ThermalState, thermal_state
 from .stiffness import stiffness_curve, thermal_stiffness_curve
 
@@ -11,5 +12,6 @@ __all__ = [
     "ThermalState",
     "stiffness_curve",
     "thermal_state",
+    "thermal_state_many",
     "thermal_stiffness_curve",
 ]
