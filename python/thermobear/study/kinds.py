@@ -410,17 +410,18 @@ SPINDLE = Kind(
             check=_choice(_spindle_names, "spindle"),
         ),
         Param("speed_rpm", float, 10_000.0, "shaft speed [rpm]"),
-        Param("preload_n", float, 300.0, "preload force [N]"),
-        Param("radial_n", float, 0.0, "radial load at the nose [N]"),
+        # Default None: the preset's own value (null in the table).
+        Param("preload_n", float, None, "preload force [N]"),
+        Param("radial_n", float, None, "radial load at the nose [N]"),
         Param(
             "preload_kind",
             str,
-            "rigid",
+            None,
             "'rigid' or 'spring'",
             check=_one_of("preload_kind", "rigid", "spring"),
         ),
-        Param("spring_rate_n_per_um", float, 6.45 / 17.92, "preload spring rate [N/um]"),
-        Param("spin_friction", float, 0.06, "spin friction coefficient [-]"),
+        Param("spring_rate_n_per_um", float, None, "preload spring rate [N/um]"),
+        Param("spin_friction", float, None, "spin friction coefficient [-]"),
     ),
     _SPINDLE_OUTPUTS,
     _run_spindle,
@@ -522,7 +523,7 @@ def kinds_table() -> Any:
             "kind": k.name,
             "input": p.name,
             "type": p.type.__name__,
-            "default": str(p.default),
+            "default": "the preset's" if p.default is None else str(p.default),
             "doc": p.doc,
         }
         for k in KINDS.values()
