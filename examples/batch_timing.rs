@@ -3,7 +3,11 @@
 //! points: 7008C, 500 N axial, radial 0..500 N, 1000..20,000 rpm, ring held
 //! level, all effects).
 //!
-//! cargo run --release --example batch_timing [points]
+//! cargo run --release --example batch_timing [points] [single]
+//!
+//! With `single` only the one-thread loop of bare solves runs (the caller
+//! can then read the process's CPU time: on a loaded machine wall time
+//! says little).
 
 use std::time::Instant;
 
@@ -35,6 +39,11 @@ fn main() -> thermobear::Result<()> {
         ok += model.solve(&p.load_n_nm, p.speed_rpm, &p.options).is_ok() as usize;
     }
     let single = t.elapsed().as_secs_f64() / n as f64;
+    if std::env::args().nth(2).as_deref() == Some("single") {
+        println!("points {n}, solved {ok}");
+        println!("native solve, 1 thread:        {:8.2} us/point", single * 1e6);
+        return Ok(());
+    }
     // The batch in a one-thread pool and in the global pool.
     let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("pool");
     let t = Instant::now();

@@ -34,7 +34,12 @@ pub fn error_kind(e: &Error) -> &'static str {
 fn pool(threads: Option<usize>) -> PyResult<Option<rayon::ThreadPool>> {
     match threads {
         None => Ok(None),
-        Some(0) => Err(Error::config("threads", 0, "must be at least 1 (or None for all cores)")).py_err(),
+        Some(0) => Err(Error::config(
+            "threads",
+            0,
+            "must be at least 1 (or None for all cores)",
+        ))
+        .py_err(),
         Some(n) => rayon::ThreadPoolBuilder::new()
             .num_threads(n)
             .build()
@@ -106,7 +111,10 @@ fn columns<const N: usize>(arrays: [(&str, &PyReadonlyArray1<'_, f64>); N]) -> P
 /// Set `ok`, `error_kind` and `error` from per-point results.
 fn error_columns<T>(d: &Bound<'_, PyDict>, results: &[Result<T>]) -> PyResult<()> {
     let py = d.py();
-    d.set_item("ok", results.iter().map(|r| r.is_ok()).collect::<Vec<_>>().into_pyarray(py))?;
+    d.set_item(
+        "ok",
+        results.iter().map(|r| r.is_ok()).collect::<Vec<_>>().into_pyarray(py),
+    )?;
     d.set_item(
         "error_kind",
         results
@@ -138,10 +146,22 @@ fn summary_columns(d: &Bound<'_, PyDict>, rows: &[Option<&PointSummary>]) -> PyR
     set("axial_displacement_um", col(&|s| s.axial_displacement_m * 1e6))?;
     set("radial_displacement_um", col(&|s| s.radial_displacement_m * 1e6))?;
     set("tilt_rad", col(&|s| s.tilt_rad))?;
-    set("inner_contact_angle_max_deg", col(&|s| deg(s.inner_contact_angle_range_rad.0)))?;
-    set("inner_contact_angle_min_deg", col(&|s| deg(s.inner_contact_angle_range_rad.1)))?;
-    set("outer_contact_angle_max_deg", col(&|s| deg(s.outer_contact_angle_range_rad.0)))?;
-    set("outer_contact_angle_min_deg", col(&|s| deg(s.outer_contact_angle_range_rad.1)))?;
+    set(
+        "inner_contact_angle_max_deg",
+        col(&|s| deg(s.inner_contact_angle_range_rad.0)),
+    )?;
+    set(
+        "inner_contact_angle_min_deg",
+        col(&|s| deg(s.inner_contact_angle_range_rad.1)),
+    )?;
+    set(
+        "outer_contact_angle_max_deg",
+        col(&|s| deg(s.outer_contact_angle_range_rad.0)),
+    )?;
+    set(
+        "outer_contact_angle_min_deg",
+        col(&|s| deg(s.outer_contact_angle_range_rad.1)),
+    )?;
     set("inner_load_max_n", col(&|s| s.inner_load_max_n))?;
     set("outer_load_max_n", col(&|s| s.outer_load_max_n))?;
     set("centrifugal_force_n", col(&|s| s.centrifugal_force_n))?;
@@ -308,7 +328,11 @@ pub fn thermal_many<'py>(
     threads: Option<usize>,
     progress: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let [n, fa, fr] = columns([("speed_rpm", arrays[0]), ("axial_n", arrays[1]), ("radial_n", arrays[2])])?;
+    let [n, fa, fr] = columns([
+        ("speed_rpm", arrays[0]),
+        ("axial_n", arrays[1]),
+        ("radial_n", arrays[2]),
+    ])?;
     let idx: Vec<usize> = (0..n.len()).collect();
     let results = map_in_chunks(py, &idx, threads, progress, |&i| thermal_point(c, n[i], fa[i], fr[i]))?;
     thermal_columns(py, &results)

@@ -136,6 +136,12 @@ def _grouped(kind: Kind, inputs: Any, solve: Callable[[dict, Any], Any]) -> Any:
     import polars as pl
 
     keys = [p.name for p in kind.params if not p.per_point]
+    if all(inputs[k].n_unique() == 1 for k in keys):  # one model: no regrouping
+        try:
+            return solve({k: inputs[k][0] for k in keys}, inputs)
+        except ThermobearError as e:
+            err = _error_row(e)
+            return pl.DataFrame({k: [v] * inputs.height for k, v in err.items()})
     frame = inputs.with_row_index("_row")
     parts = []
     for _, rows in frame.group_by(keys, maintain_order=True):

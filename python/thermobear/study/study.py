@@ -145,8 +145,7 @@ class Study:
         def on_done(index: int, frame: Any) -> None:
             if store is not None:
                 store.write(index, frame)
-            else:
-                memory[index] = frame
+            memory[index] = frame
             report.computed += 1
             bar.update(frame.height)
             if on_chunk is not None:
@@ -181,10 +180,12 @@ class Study:
     def _collect(self, store: Optional[Store], memory: dict, report: RunReport) -> Any:
         import polars as pl
 
-        if store is not None:
-            frame = store.scan().collect()
-        else:
-            frame = pl.concat([memory[i] for i in sorted(memory)])
+        # Chunks computed now are still in memory; only reused ones are read.
+        frames = [
+            memory[i] if i in memory else store.read(i)  # type: ignore[union-attr]
+            for i in range(self.n_chunks)
+        ]
+        frame = pl.concat(frames, rechunk=False)
         report.failed_points = int(frame.height - frame["ok"].sum())
         return frame
 
