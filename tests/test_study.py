@@ -185,6 +185,20 @@ def test_spindle_and_gear_points():
     assert low["error_kind"][0] == "ConfigError" and "steps_per_period" in low["error"][0]
 
 
+def test_a_dask_task_rebuilds_the_same_chunk_from_the_description():
+    # What a worker receives is the JSON-able description, not the objects.
+    from thermobear.study.engine import compute, compute_on_worker
+
+    for s in (
+        tb.Study("spindle", {"speed_rpm": [8000.0]}, chunk_size=1),
+        tb.Study("thermal", {"speed_rpm": [5000.0, 7000.0]}, {"lubricant": "ISO VG 68"}),
+    ):
+        spec = json.loads(json.dumps(s.grid.spec()))
+        assert_frame_equal(
+            compute_on_worker(spec, s.chunk_size, 0), compute(s.grid, s.chunk_size, 0, 1)
+        )
+
+
 # -- grids and the TOML file -------------------------------------------------------
 
 

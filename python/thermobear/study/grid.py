@@ -99,6 +99,9 @@ class Grid:
             p = kind.param(name)
             if name in self.dims:
                 raise ConfigError(f"invalid fixed.{name}: {name!r} is also a grid dimension")
+            if value is None and p.default is None:  # "the preset's own value"
+                self.fixed[name] = None
+                continue
             self.fixed[name] = _scalar(p, value, f"fixed.{name}")
         self.shape = tuple(len(v) for v in self.dims.values())
         self.n_points = int(np.prod(self.shape, dtype=np.int64)) if self.shape else 1
