@@ -153,6 +153,36 @@ def test_interrupted_study_resumes_with_only_the_missing_chunks(tmp_path):
     assert not list(tmp_path.rglob("*.tmp"))  # written by rename only
 
 
+def test_ctrl_c_keeps_finished_chunks_and_the_rerun_computes_the_rest(tmp_path):
+    """A real interrupt: SIGALRM with SIGINT's handler, delivered by the OS
+    0.3 s into the run (inside a native batch call or between chunks)."""
+    import signal
+
+    def study() -> tb.Study:
+        grid = {
+            "speed_rpm": {"start": 2000, "stop": 20000, "num": 50},
+            "axial_n": range(200, 1000, 20),
+        }
+        return tb.Study("thermal", grid, chunk_size=50)  # 2000 points, 40 chunks
+
+    s = study()
+    previous = signal.signal(signal.SIGALRM, signal.default_int_handler)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.3)
+        with pytest.raises(KeyboardInterrupt):
+            s.run(tmp_path, progress=False)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0.0)
+        signal.signal(signal.SIGALRM, previous)
+    kept = len(list((tmp_path / "chunks").glob("chunk-*.parquet")))
+    assert kept == s.report.computed < 40 and s.report.interrupted
+    assert not list(tmp_path.rglob("*.tmp"))
+    again = study()
+    df = again.run(tmp_path, progress=False)
+    assert (again.report.computed, again.report.reused) == (40 - kept, kept)
+    assert df["point"].to_list() == list(range(2000)) and df["ok"].all()
+
+
 def test_another_grid_is_not_mixed_into_old_results(tmp_path):
     _thermal_study(chunk_size=6).run(tmp_path, progress=False)
     other = tb.Study("thermal", {"speed_rpm": [3000, 4000]}, chunk_size=6)
