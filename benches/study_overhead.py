@@ -55,7 +55,7 @@ def study_overhead(n_speeds: int, repeats: int) -> None:
     grid = {
         "speed_rpm": {"start": 1000, "stop": 20000, "num": n_speeds},
         "axial_n": list(np.linspace(200.0, 1000.0, 20)),
-        "radial_n": list(np.linspace(0.0, 500.0, 10)),
+        "radial_n": list(np.linspace(0.0, 500.0, 25)),
     }
     study = tb.Study("bearing", grid)
     points = study.points().select("speed_rpm", "axial_n", "radial_n")

@@ -115,6 +115,16 @@ def test_study_rows_are_the_grid_in_order_with_inputs_and_outputs():
     assert df.filter(pl.col("bearing") == "7008C")["heat_w"].to_list() == one["heat_w"].to_list()
 
 
+def test_a_model_the_solver_rejects_is_an_error_row_of_its_points_only():
+    s = tb.Study("thermal", {"spin_friction": [0.06, -1.0], "speed_rpm": [5000.0, 8000.0]})
+    df = s.run(progress=False)
+    assert df["ok"].to_list() == [True, True, False, False]
+    bad = df.filter(~pl.col("ok"))
+    assert set(bad["error_kind"]) == {"ConfigError"} and "spin_friction" in bad["error"][0]
+    good = tb.thermal_state_many(tb.Bearing.preset("7008C"), {"speed_rpm": [5000.0, 8000.0]})
+    assert df["heat_w"].head(2).to_list() == good["heat_w"].to_list()
+
+
 def test_chunking_does_not_change_results():
     a = _thermal_study(chunk_size=1).run(progress=False)
     b = _thermal_study(chunk_size=100).run(progress=False)
@@ -148,6 +158,8 @@ def test_interrupted_study_resumes_with_only_the_missing_chunks(tmp_path):
     third = _thermal_study(chunk_size=2)
     assert_frame_equal(third.run(tmp_path, progress=False), df)
     assert (third.report.computed, third.report.reused) == (0, 6)
+    assert third.report.failed_points == 2  # the 6208's runaway rows, read back
+    assert _thermal_study(chunk_size=2).run(tmp_path, collect=False, progress=False) is None
     manifest = json.loads((tmp_path / "manifest.json").read_text())
     assert manifest["grid_hash"] == s.grid_hash and manifest["n_chunks"] == 6
     assert not list(tmp_path.rglob("*.tmp"))  # written by rename only

@@ -19,7 +19,7 @@ def run_study_file(
     """Run the study of a TOML file into ``out``; returns the report line."""
     study = load_study(path)
     try:
-        study.run(out, engine=scheduler, progress=progress, overwrite=overwrite)
+        study.run(out, engine=scheduler, progress=progress, overwrite=overwrite, collect=False)
     except KeyboardInterrupt:
         if study.report is not None:
             study.report.interrupted = True

@@ -129,29 +129,31 @@ def _error_row(e: BaseException) -> dict:
     return {"ok": False, "error_kind": type(e).__name__, "error": str(e)}
 
 
+def _solve_rows(solve: Callable[[dict, Any], Any], keys: list[str], rows: Any) -> Any:
+    """``solve(model, rows)`` for rows of one model; its ThermobearError
+    becomes every row's error."""
+    import polars as pl
+
+    try:
+        return solve({k: rows[k][0] for k in keys}, rows)
+    except ThermobearError as e:
+        err = _error_row(e)
+        return pl.DataFrame({k: [v] * rows.height for k, v in err.items()})
+
+
 def _grouped(kind: Kind, inputs: Any, solve: Callable[[dict, Any], Any]) -> Any:
     """Group the rows by the model inputs, ``solve(model, rows)`` each group
-    (a ThermobearError of the whole group becomes its rows' error), and put
-    the rows back in input order."""
+    and put the rows back in input order."""
     import polars as pl
 
     keys = [p.name for p in kind.params if not p.per_point]
     if all(inputs[k].n_unique() == 1 for k in keys):  # one model: no regrouping
-        try:
-            return solve({k: inputs[k][0] for k in keys}, inputs)
-        except ThermobearError as e:
-            err = _error_row(e)
-            return pl.DataFrame({k: [v] * inputs.height for k, v in err.items()})
+        return _solve_rows(solve, keys, inputs)
     frame = inputs.with_row_index("_row")
-    parts = []
-    for _, rows in frame.group_by(keys, maintain_order=True):
-        model = {k: rows[k][0] for k in keys}
-        try:
-            out = solve(model, rows)
-        except ThermobearError as e:
-            err = _error_row(e)
-            out = pl.DataFrame({k: [v] * rows.height for k, v in err.items()})
-        parts.append(out.with_columns(rows["_row"]))
+    parts = [
+        _solve_rows(solve, keys, rows).with_columns(rows["_row"])
+        for _, rows in frame.group_by(keys, maintain_order=True)
+    ]
     return pl.concat(parts, how="diagonal_relaxed").sort("_row").drop("_row")
 
 

@@ -90,11 +90,9 @@ class Store:
 
         return pl.read_parquet(self.chunks / chunk_name(index))
 
-    def scan(self) -> Any:
-        """All finished chunks as one polars LazyFrame (in point order)."""
+    def failed(self, index: int) -> int:
+        """Failed points of a stored chunk (reads its ``ok`` column only)."""
         import polars as pl
 
-        files = sorted(self.chunks.glob("chunk-*.parquet"))
-        if not files:
-            raise ConfigError(f"invalid out = {str(self.root)!r}: no finished chunk yet")
-        return pl.scan_parquet(files)
+        ok = pl.read_parquet(self.chunks / chunk_name(index), columns=["ok"])["ok"]
+        return int(ok.len() - ok.sum())

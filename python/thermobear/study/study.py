@@ -16,7 +16,11 @@ from .kinds import kind_of
 from .store import FORMAT, Store
 
 #: Points per chunk by kind: a chunk is about 0.1 .. 1 s of work on one core.
-DEFAULT_CHUNK = {"bearing": 5000, "thermal": 200, "spindle": 8, "gear": 8}
+DEFAULT_CHUNK = {"bearing": 20000, "thermal": 500, "spindle": 8, "gear": 8}
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}" + ("" if n == 1 else "s")
 
 
 @dataclass
@@ -36,7 +40,7 @@ class RunReport:
         where = f"; results in {self.out}" if self.out else ""
         stop = " (interrupted)" if self.interrupted else ""
         return (
-            f"{self.points} points in {self.chunks} chunks: {self.computed} computed, "
+            f"{self.points} points in {_count(self.chunks, 'chunk')}: {self.computed} computed, "
             f"{self.reused} reused, {self.failed_points} failed points, "
             f"{self.seconds:.1f} s{stop}{where}"
         )
@@ -109,6 +113,7 @@ class Study:
         threads: Optional[int] = None,
         overwrite: bool = False,
         on_chunk: Optional[Callable[[int, Any], Any]] = None,
+        collect: bool = True,
     ) -> Any:
         """Compute the study and return its DataFrame (point order).
 
@@ -126,7 +131,9 @@ class Study:
         ``progress``: a tqdm bar (None: only when stderr is a terminal or
         in a notebook). ``on_chunk(index, frame)`` after each stored chunk.
         Ctrl-C keeps the finished chunks; :attr:`report` says what was
-        computed and reused (also after an interrupt)."""
+        computed and reused (also after an interrupt). ``collect=False``
+        (with ``out``) keeps no chunk in memory and returns None: read the
+        results with ``polars.scan_parquet(out / "chunks" / "*.parquet")``."""
         t0 = time.perf_counter()
         store = Store(out, self.manifest(), overwrite) if out is not None else None
         done = store.done() if store is not None else set()
@@ -138,6 +145,9 @@ class Study:
             out=None if out is None else str(Path(out)),
         )
         self.report = report
+        if not collect and store is None:
+            raise ConfigError("invalid collect = False: without out the results would be lost")
+        report.failed_points = sum(store.failed(i) for i in done) if store is not None else 0
         memory: dict[int, Any] = {}
         initial = sum(self._chunk_len(i) for i in done)
         bar = engines.Progress(progress, self.n_points, initial, f"{self.kind} study")
@@ -145,8 +155,10 @@ class Study:
         def on_done(index: int, frame: Any) -> None:
             if store is not None:
                 store.write(index, frame)
-            memory[index] = frame
+            if collect:
+                memory[index] = frame
             report.computed += 1
+            report.failed_points += int(frame.height - frame["ok"].sum())
             bar.update(frame.height)
             if on_chunk is not None:
                 on_chunk(index, frame)
@@ -159,7 +171,7 @@ class Study:
         finally:
             bar.close()
             report.seconds = time.perf_counter() - t0
-        return self._collect(store, memory, report)
+        return self._collect(store, memory) if collect else None
 
     def _chunk_len(self, index: int) -> int:
         start, stop = engines.chunk_bounds(self.n_points, self.chunk_size, index)
@@ -177,7 +189,7 @@ class Study:
             if owned:
                 client.close()
 
-    def _collect(self, store: Optional[Store], memory: dict, report: RunReport) -> Any:
+    def _collect(self, store: Optional[Store], memory: dict) -> Any:
         import polars as pl
 
         # Chunks computed now are still in memory; only reused ones are read.
@@ -185,9 +197,7 @@ class Study:
             memory[i] if i in memory else store.read(i)  # type: ignore[union-attr]
             for i in range(self.n_chunks)
         ]
-        frame = pl.concat(frames, rechunk=False)
-        report.failed_points = int(frame.height - frame["ok"].sum())
-        return frame
+        return pl.concat(frames, rechunk=False)
 
     def __len__(self) -> int:
         return self.n_points
@@ -196,5 +206,5 @@ class Study:
         dims = ", ".join(f"{k}[{len(v)}]" for k, v in self.grid.dims.items())
         return (
             f"Study({self.kind!r}, {dims or 'one point'}: {self.n_points} points, "
-            f"{self.n_chunks} chunks of {self.chunk_size})"
+            f"{_count(self.n_chunks, 'chunk')} of {self.chunk_size})"
         )
