@@ -125,6 +125,15 @@ def test_a_model_the_solver_rejects_is_an_error_row_of_its_points_only():
     assert df["heat_w"].head(2).to_list() == good["heat_w"].to_list()
 
 
+def test_a_study_pickles():
+    import pickle
+
+    s = tb.Study("spindle", {"speed_rpm": [8000.0, 9000.0]}, {"preload_kind": "spring"})
+    t = pickle.loads(pickle.dumps(s))
+    assert t.grid_hash == s.grid_hash and t.chunk_size == s.chunk_size
+    assert_frame_equal(t.points(), s.points())
+
+
 def test_chunking_does_not_change_results():
     a = _thermal_study(chunk_size=1).run(progress=False)
     b = _thermal_study(chunk_size=100).run(progress=False)

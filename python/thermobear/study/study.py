@@ -199,6 +199,10 @@ class Study:
         ]
         return pl.concat(frames, rechunk=False)
 
+    def __reduce__(self) -> tuple:
+        # The grid's values, not its kind (whose checks are closures).
+        return (_rebuild, (self.kind, self.grid.dims, self.grid.fixed, self.chunk_size))
+
     def __len__(self) -> int:
         return self.n_points
 
@@ -208,3 +212,8 @@ class Study:
             f"Study({self.kind!r}, {dims or 'one point'}: {self.n_points} points, "
             f"{_count(self.n_chunks, 'chunk')} of {self.chunk_size})"
         )
+
+
+def _rebuild(kind: str, dims: dict, fixed: dict, chunk_size: int) -> Study:
+    """Unpickle a :class:`Study` (through its validating constructor)."""
+    return Study(kind, dims, fixed, chunk_size=chunk_size)
