@@ -9,7 +9,7 @@ import sys
 from typing import Any, Callable, Iterable, Optional
 
 from ..errors import ConfigError
-from .grid import Grid
+from .grid import Grid, grid_hash
 from .kinds import kind_of
 
 #: What to install for ``engine=`` a Dask client or scheduler address.
@@ -31,10 +31,20 @@ def compute(grid: Grid, chunk_size: int, index: int, threads: Optional[int]) -> 
     return inputs.hstack(grid.kind.compute(inputs.drop("point"), threads))
 
 
+#: Grids rebuilt in this (worker) process, by the hash of their description.
+_GRIDS: dict[str, Grid] = {}
+
+
 def compute_on_worker(spec: dict, chunk_size: int, index: int) -> Any:
-    """The Dask task: rebuild the grid from its description, compute one
-    chunk on one thread (a worker runs as many tasks as it has threads)."""
-    grid = Grid(kind_of(spec["kind"]), dict(spec["dims"]), spec["fixed"])
+    """The Dask task: rebuild the grid from its description (once per
+    worker process), compute one chunk on one thread (a worker runs as many
+    tasks as it has threads)."""
+    key = grid_hash(spec)
+    grid = _GRIDS.get(key)
+    if grid is None:
+        grid = Grid(kind_of(spec["kind"]), dict(spec["dims"]), spec["fixed"])
+        _GRIDS.clear()  # keep one: a worker serves one study at a time
+        _GRIDS[key] = grid
     return compute(grid, chunk_size, index, 1)
 
 
@@ -114,7 +124,7 @@ def run_dask(client: Any, grid: Grid, chunk_size: int, todo: list[int], on_done:
     """One task per chunk; results handed to ``on_done`` as they complete.
     Ctrl-C (or an error in ``on_done``) cancels what has not finished."""
     as_completed = _distributed(client).as_completed
-    spec = grid.spec()
+    [spec] = client.scatter([grid.spec()], broadcast=True)  # sent once, not per task
     futures = {client.submit(compute_on_worker, spec, chunk_size, i, pure=False): i for i in todo}
     try:
         for fut in as_completed(futures):
