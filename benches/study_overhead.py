@@ -142,7 +142,7 @@ def dask_scaling(n_speeds: int) -> None:
     for workers in (1, 2):
         with (
             LocalCluster(
-                n_workers=workers, processes=True, threads_per_worker=1, dashboard_address=None
+                n_workers=workers, processes=True, threads_per_worker=1, dashboard_address=":0"
             ) as cluster,
             Client(cluster) as client,
         ):
