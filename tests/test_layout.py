@@ -29,7 +29,7 @@ LAYERS: list[tuple[str, ...]] = [
     ("thermobear.diagnosis",),
     ("thermobear.study",),
     ("thermobear.plot",),
-    ("thermobear.studies",),
+    ("thermobear.studies", "thermobear.validation"),
     ("thermobear.cli",),
     ("thermobear", "thermobear.__main__"),
 ]

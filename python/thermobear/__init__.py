@@ -16,7 +16,8 @@ or below; ``tests/test_layout.py`` checks it):
 * ``diagnosis`` -- model against measurements, step by step;
 * ``study`` -- design studies: grids in chunks, parquet, resume, Dask;
 * ``plot`` -- figures, one module per topic;
-* ``studies`` (the seed studies, ``thermobear demo``) and ``cli`` on top.
+* ``studies`` (the seed studies, ``thermobear demo``) and ``validation``
+  (published data sets, ``thermobear validate``), ``cli`` on top.
 """
 
 from . import (
@@ -31,6 +32,7 @@ from . import (
     spindle,
     study,
     thermal,
+    validation,
 )
 from .bearing import Bearing, BearingSolution, Material
 from .config import load_config, seed_config, seed_config_names
@@ -73,6 +75,7 @@ from .spindle import (
 )
 from .study import Study, load_study
 from .thermal import ThermalState, stiffness_curve, thermal_state, thermal_state_many
+from .validation import validate
 
 __version__: str = _native.__version__
 
@@ -98,6 +101,7 @@ __all__ = [
     "diagnosis",
     "study",
     "plot",
+    "validation",
     # errors
     "ConfigError",
     "ConvergenceError",
@@ -152,4 +156,6 @@ __all__ = [
     # design studies
     "Study",
     "load_study",
+    # validation against published data
+    "validate",
 ]

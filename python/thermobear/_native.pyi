@@ -204,11 +204,17 @@ class GearSystem:
         mesh_damping_ratio: float = 0.07,
         mesh_damping: str = "in-contact",
         bearing_damping_ratio: float = 0.02,
-        te_amplitude_um: float = 2.0,
+        te_amplitude_um: Optional[float] = None,
         torque_nm: Optional[float] = None,
         table_points: int = 64,
-        mesh_model: str = "potential-energy",
-    ) -> None: ...
+        mesh_model: Optional[str] = None,
+        mesh_stiffness_n_per_m: Optional[Sequence[float]] = None,
+        transmission_error_m: Optional[Sequence[float]] = None,
+    ) -> None:
+        """Support stiffness per shaft against speed; optional uniform mesh
+        tables over one mesh period (phases i / n): normal mesh stiffness
+        [N/m] instead of ``mesh_model``, TE [m] instead of
+        ``te_amplitude_um`` (default 2 um). Negative ``torque_nm``: coast."""
     @property
     def mesh_model(self) -> str: ...
     def params(self) -> dict[str, float]: ...
@@ -225,7 +231,9 @@ class GearSystem:
     def static_state_m(self, speed_rpm: float) -> list[float]: ...
     def mesh_period_s(self, speed_rpm: float) -> float: ...
     def check_steps(self, speed_rpm: float, steps_per_period: int) -> None: ...
-    def mesh_tables(self) -> dict[str, npt.NDArray[np.float64]]: ...
+    def mesh_tables(self) -> dict[str, npt.NDArray[np.float64]]:
+        """``mesh_phase``, ``normal_stiffness_n_per_m``,
+        ``transmission_error_um``, ``transmission_error_m``."""
 
 def bifurcation(
     system: GearSystem,
@@ -236,7 +244,16 @@ def bifurcation(
     steps_per_period: int = 64,
     lyapunov_periods: int = 100,
     progress: Optional[Callable[[int, int], None]] = None,
-) -> dict: ...
+    settings: Optional[dict[str, Any]] = None,
+) -> dict:
+    """Per-speed columns in sweep order plus the flat Poincare samples.
+    ``settings``: classifier settings by name (max_transient_periods,
+    max_period, period_rel_tol, converging_ratio, lyapunov_block_periods,
+    lyapunov_max_periods, lyapunov_sigmas,
+    lyapunov_threshold_per_mesh_period, zero_one_threshold,
+    jump_rel_amplitude, jump_trend_factor, jump_window_speeds); speeds
+    strictly ascending."""
+
 def bifurcation_many(
     systems: Sequence[GearSystem],
     directions: Sequence[str],
@@ -246,6 +263,7 @@ def bifurcation_many(
     steps_per_period: int = 64,
     lyapunov_periods: int = 100,
     progress: Optional[Callable[[int, int], None]] = None,
+    settings: Optional[dict[str, Any]] = None,
 ) -> list[dict]: ...
 def regime_map(
     system: GearSystem,
@@ -257,6 +275,7 @@ def regime_map(
     steps_per_period: int = 64,
     lyapunov_periods: int = 100,
     progress: Optional[Callable[[int, int], None]] = None,
+    settings: Optional[dict[str, Any]] = None,
 ) -> dict: ...
 def largest_lyapunov_reference(
     name: str,
@@ -271,7 +290,12 @@ def largest_lyapunov_gear(
     periods: int = 200,
     transient_periods: int = 300,
     steps_per_period: int = 64,
-) -> float: ...
+    block_periods: int = 10,
+) -> dict[str, float]:
+    """``lyapunov_per_s``, ``lyapunov_stderr_per_s``,
+    ``lyapunov_per_mesh_period``, ``lyapunov_stderr_per_mesh_period``,
+    ``blocks``, ``mesh_period_s``."""
+
 def gear_bearing_schedule(
     bearing: Bearing,
     case: str,

@@ -94,6 +94,12 @@ def _add_study(sub: argparse._SubParsersAction) -> None:
     st.set_defaults(func=_cmd_study)
 
 
+def _cmd_validate(args: argparse.Namespace) -> int:
+    from .validate import validate_command
+
+    return validate_command(Path(args.out), args.sets)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     p = argparse.ArgumentParser(
         prog="thermobear",
@@ -131,6 +137,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     g.add_argument("--out", default=None, help="folder for tables and figures")
     g.set_defaults(func=_cmd_diagnose)
     _add_study(sub)
+    v = sub.add_parser("validate", help="model, diagnose and calibrate the published data sets")
+    v.add_argument("sets", nargs="*", metavar="SET", help="set names (default: all)")
+    v.add_argument(
+        "--out", default="thermobear-validation", help="report folder (default: %(default)s)"
+    )
+    v.set_defaults(func=_cmd_validate)
     args = p.parse_args(argv)
     from ..errors import ThermobearError
 
