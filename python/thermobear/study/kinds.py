@@ -448,7 +448,7 @@ def _run_gear(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
             GearPair.preset(row["gear"]),
             Bearing.preset(row["bearing"]),
             row["stiffness"],
-            backlash_um=row["backlash_um"],
+            backlash_total_um=row["backlash_total_um"],
             mesh_damping_ratio=row["mesh_damping_ratio"],
             te_amplitude_um=row["te_amplitude_um"],
             torque_nm=row["torque_nm"],
@@ -473,6 +473,8 @@ _GEAR_OUTPUTS = (
     ("impact", "String"),
     ("amplitude_um", "Float64"),
     ("mean_dte_um", "Float64"),
+    ("lyapunov_per_s", "Float64"),
+    ("settled", "Boolean"),
 )
 
 GEAR = Kind(
@@ -503,7 +505,7 @@ GEAR = Kind(
         Param("speed_rpm", float, 3000.0, "pinion speed [rpm]"),
         Param("torque_nm", float, 100.0, "input torque [N m]"),
         Param("te_amplitude_um", float, 2.0, "transmission error amplitude [um]"),
-        Param("backlash_um", float, 100.0, "total backlash 2b [um]"),
+        Param("backlash_total_um", float, 100.0, "total backlash 2b [um]"),
         Param("mesh_damping_ratio", float, 0.07, "mesh damping ratio [-]"),
         Param("transient_periods", int, 300, "mesh periods discarded"),
         Param("record_periods", int, 100, "mesh periods recorded"),
