@@ -64,6 +64,31 @@ def test_solve_many_does_not_depend_on_threads_and_physics_holds():
     assert (one["outer_contact_angle_max_deg"] < one["inner_contact_angle_min_deg"]).all()
 
 
+def test_solve_many_reports_progress_and_stops_on_ctrl_c():
+    import signal
+    import time
+
+    b = tb.Bearing.preset("7008C")
+    calls = []
+    pts = {"speed_rpm": np.linspace(3000.0, 15000.0, 500), "axial_n": 500.0}
+    b.solve_many(pts, progress=lambda done, total: calls.append((done, total)))
+    assert calls[-1] == (500, 500) and all(t == 500 for _, t in calls)
+    assert [d for d, _ in calls] == sorted(d for d, _ in calls)
+    # A real interrupt (SIGINT's handler on an OS timer) 0.2 s into a batch
+    # of about 10 s of work stops it well before the end.
+    many = {"speed_rpm": np.linspace(3000.0, 15000.0, 250_000), "axial_n": 500.0}
+    previous = signal.signal(signal.SIGALRM, signal.default_int_handler)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.2)
+        t0 = time.perf_counter()
+        with pytest.raises(KeyboardInterrupt):
+            b.solve_many(many)
+        assert time.perf_counter() - t0 < 3.0
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0.0)
+        signal.signal(signal.SIGALRM, previous)
+
+
 def test_thermal_state_many_equals_thermal_state_and_keeps_a_runaway_row():
     b = tb.Bearing.preset("6208")
     pts = {"speed_rpm": [4000.0, 9000.0, 200_000.0], "axial_n": 300.0, "radial_n": 500.0}

@@ -1,5 +1,6 @@
 //! Batch entry points: many operating points in one call, rayon inside,
-//! the GIL released, Ctrl-C checked between chunks, one row per point.
+//! the GIL released, Ctrl-C checked every 50 ms while the threads work, one
+//! row per point.
 //!
 //! A point that fails (bad input, no convergence, thermal runaway) does not
 //! raise: its row carries `ok = False`, the Python exception name in
@@ -49,12 +50,19 @@ fn pool(threads: Option<usize>) -> PyResult<Option<rayon::ThreadPool>> {
     }
 }
 
-/// Map `f` over `items` in parallel, a chunk at a time with the GIL
-/// released, in a pool of `threads` threads (None: the global pool).
-/// Between chunks: Ctrl-C (KeyboardInterrupt) and `progress(done, total)`.
+/// How often the caller's thread looks for Ctrl-C and reports progress
+/// while the workers run.
+const POLL: std::time::Duration = std::time::Duration::from_millis(50);
+
+/// Map `f` over `items` in parallel in a pool of `threads` threads (None:
+/// the global pool), the GIL released. The work runs as one parallel
+/// iteration (no barrier between parts of it, which on a loaded machine
+/// would leave threads waiting for a descheduled one); meanwhile the
+/// calling thread checks for Ctrl-C every 50 ms (KeyboardInterrupt: the
+/// items not started are skipped) and reports `progress(done, total)`.
 /// Every item is computed on its own, so results do not depend on the
-/// thread count or the chunking.
-pub fn map_in_chunks<T, R, F>(
+/// thread count.
+pub fn map_interruptible<T, R, F>(
     py: Python<'_>,
     items: &[T],
     threads: Option<usize>,
@@ -66,26 +74,69 @@ where
     R: Send,
     F: Fn(&T) -> R + Sync + Send,
 {
+    use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+    use std::sync::mpsc::RecvTimeoutError;
+
     let pool = pool(threads)?;
-    let width = pool
-        .as_ref()
-        .map_or_else(rayon::current_num_threads, |p| p.current_num_threads())
-        .max(1);
-    // About 16 chunks (Ctrl-C stays responsive), each enough to keep every thread busy.
-    let chunk = (items.len() / 16).max(4 * width).max(1);
-    let mut out = Vec::with_capacity(items.len());
-    for part in items.chunks(chunk) {
-        let mut res: Vec<R> = py.detach(|| match &pool {
-            Some(p) => p.install(|| part.par_iter().map(&f).collect()),
-            None => part.par_iter().map(&f).collect(),
+    let done = AtomicUsize::new(0);
+    let stop = AtomicBool::new(false);
+    let (tx, rx) = std::sync::mpsc::channel::<Vec<Option<R>>>();
+    let run = || -> Vec<Option<R>> {
+        items
+            .par_iter()
+            .map(|x| {
+                if stop.load(Ordering::Relaxed) {
+                    return None;
+                }
+                let r = f(x);
+                done.fetch_add(1, Ordering::Relaxed);
+                Some(r)
+            })
+            .collect()
+    };
+    std::thread::scope(|scope| -> PyResult<Vec<R>> {
+        scope.spawn(|| {
+            let res = match &pool {
+                Some(p) => p.install(run),
+                None => run(),
+            };
+            // The receiver outlives this thread (joined at the end of the scope).
+            let _ = tx.send(res);
         });
-        out.append(&mut res);
-        py.check_signals()?;
-        if let Some(cb) = progress {
-            cb.call1((out.len(), items.len()))?;
+        let rx = std::sync::Mutex::new(rx);
+        let mut interrupt = None;
+        loop {
+            let got = py.detach(|| match rx.lock() {
+                Ok(r) => r.recv_timeout(POLL),
+                Err(_) => Err(RecvTimeoutError::Disconnected),
+            });
+            match got {
+                Ok(res) => {
+                    if let Some(e) = interrupt {
+                        return Err(e);
+                    }
+                    py.check_signals()?;
+                    if let Some(cb) = progress {
+                        cb.call1((items.len(), items.len()))?;
+                    }
+                    return Ok(res.into_iter().flatten().collect()); // no interrupt: every item ran
+                }
+                // The worker thread panicked: the scope re-raises its panic.
+                Err(RecvTimeoutError::Disconnected) => return Ok(Vec::new()),
+                Err(RecvTimeoutError::Timeout) => {}
+            }
+            if interrupt.is_none() {
+                let checked = py.check_signals().and_then(|_| match progress {
+                    Some(cb) => cb.call1((done.load(Ordering::Relaxed), items.len())).map(|_| ()),
+                    None => Ok(()),
+                });
+                if let Err(e) = checked {
+                    stop.store(true, Ordering::Relaxed);
+                    interrupt = Some(e);
+                }
+            }
         }
-    }
-    Ok(out)
+    })
 }
 
 /// One contiguous f64 column per name, read from numpy arrays of one length.
@@ -218,7 +269,7 @@ pub fn solve_many<'py>(
             })
         })
         .collect();
-    let results = map_in_chunks(py, &points, threads, progress.as_ref(), |p| {
+    let results = map_interruptible(py, &points, threads, progress.as_ref(), |p| {
         let p = p.as_ref().map_err(Clone::clone)?;
         solve_point(&model, p).map(|s| PointSummary::from(&s))
     })?;
@@ -334,7 +385,7 @@ pub fn thermal_many<'py>(
         ("radial_n", arrays[2]),
     ])?;
     let idx: Vec<usize> = (0..n.len()).collect();
-    let results = map_in_chunks(py, &idx, threads, progress, |&i| thermal_point(c, n[i], fa[i], fr[i]))?;
+    let results = map_interruptible(py, &idx, threads, progress, |&i| thermal_point(c, n[i], fa[i], fr[i]))?;
     thermal_columns(py, &results)
 }
 

@@ -211,7 +211,7 @@ class Bearing:
         progress: Any = None,
     ) -> "polars.DataFrame":  # noqa: F821
         """Solve many operating points in one native call (rayon threads,
-        GIL released, Ctrl-C between chunks), each exactly as :meth:`solve`
+        GIL released, Ctrl-C within 50 ms), each exactly as :meth:`solve`
         would (bit for bit).
 
         ``points``: a polars DataFrame (or a mapping of columns) with any of

@@ -85,8 +85,8 @@ class Progress:
 def run_local(
     grid: Grid, chunk_size: int, todo: Iterable[int], threads: Optional[int], on_done: OnDone
 ) -> None:
-    """Chunk after chunk on this machine; Ctrl-C (between the native
-    sub-chunks) stops after the chunks already handed to ``on_done``."""
+    """Chunk after chunk on this machine; Ctrl-C (seen by the native batch
+    call within 50 ms) stops after the chunks already handed to ``on_done``."""
     for index in todo:
         on_done(index, compute(grid, chunk_size, index, threads))
 

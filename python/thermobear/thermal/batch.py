@@ -29,8 +29,8 @@ def thermal_state_many(
     progress: Any = None,
 ) -> "polars.DataFrame":  # noqa: F821
     """:func:`~thermobear.thermal_state` of a bearing at many operating
-    points in one native call (rayon threads, GIL released, Ctrl-C between
-    chunks), each point exactly as the single call computes it.
+    points in one native call (rayon threads, GIL released, Ctrl-C within
+    50 ms), each point exactly as the single call computes it.
 
     ``points``: a polars DataFrame (or mapping of columns) with any of
     ``speed_rpm``, ``axial_n``, ``radial_n`` (absent: 0); other columns are
