@@ -6,6 +6,7 @@ progress bar for both."""
 from __future__ import annotations
 
 import sys
+from concurrent.futures import Future, ThreadPoolExecutor, wait
 from typing import Any, Callable, Iterable, Optional
 
 from ..errors import ConfigError
@@ -85,10 +86,25 @@ class Progress:
 def run_local(
     grid: Grid, chunk_size: int, todo: Iterable[int], threads: Optional[int], on_done: OnDone
 ) -> None:
-    """Chunk after chunk on this machine; Ctrl-C (seen by the native batch
-    call within 50 ms) stops after the chunks already handed to ``on_done``."""
-    for index in todo:
-        on_done(index, compute(grid, chunk_size, index, threads))
+    """Chunk after chunk on this machine. A finished chunk is handed to
+    ``on_done`` (stored) in a background thread while the next one
+    computes; the ``on_done`` calls stay in order, one at a time, and an
+    exception in one (an ``on_chunk`` hook's) stops the run at the next
+    chunk. Ctrl-C (seen by the native batch call within 50 ms) stops it too;
+    a chunk being stored at that moment is still kept."""
+    with ThreadPoolExecutor(max_workers=1) as store:
+        pending: Optional[Future] = None
+        try:
+            for index in todo:
+                frame = compute(grid, chunk_size, index, threads)
+                if pending is not None:
+                    pending.result()
+                pending = store.submit(on_done, index, frame)
+            if pending is not None:
+                pending.result()
+        finally:
+            if pending is not None:
+                wait([pending])
 
 
 def _distributed(engine: Any) -> Any:
