@@ -159,6 +159,22 @@ def test_a_study_pickles():
     assert_frame_equal(t.points(), s.points())
 
 
+def test_heat_model_and_lubrication_are_dimensions():
+    s = tb.Study(
+        "thermal", {"heat_model": ["palmgren", "skf"]}, {"speed_rpm": 8000.0, "axial_n": 400}
+    )
+    df = s.run(progress=False)
+    b = tb.Bearing.preset("7008C")
+    for row in df.iter_rows(named=True):
+        single = tb.thermal_state(b, 8000.0, 400.0, 0.0, heat_model=row["heat_model"])
+        assert row["heat_w"] == single.total_heat_w
+    assert df["heat_w"][0] != df["heat_w"][1]
+    with pytest.raises(tb.ConfigError, match="lubrication = treacle"):
+        tb.Study("thermal", {"lubrication": ["oil-mist", "treacle"]})
+    oil_air = tb.Study("thermal", {"lubrication": ["oil-air"]}, {"speed_rpm": 8000.0})
+    assert oil_air.run(progress=False)["ok"].all()
+
+
 def test_chunking_does_not_change_results():
     a = _thermal_study(chunk_size=1).run(progress=False)
     b = _thermal_study(chunk_size=100).run(progress=False)

@@ -74,7 +74,13 @@ from .spindle import (
     transient,
 )
 from .study import Study, load_study
-from .thermal import ThermalState, stiffness_curve, thermal_state, thermal_state_many
+from .thermal import (
+    ThermalState,
+    lubrication_defaults,
+    stiffness_curve,
+    thermal_state,
+    thermal_state_many,
+)
 from .validation import validate
 
 __version__: str = _native.__version__
@@ -85,7 +91,9 @@ def effects(kind: str | None = None) -> "polars.DataFrame":  # noqa: F821
     leave out, one row each (see :func:`thermobear.diagnosis.effect_registry`
     for the columns). ``kind="switch"``: the named effects for
     ``effects=[...]``; ``kind="term"``: the terms with a calibratable input
-    whose null value leaves them out (extra heat, housing conductance ...)."""
+    whose null value leaves them out (extra heat, housing conductance ...);
+    ``kind="model"``: alternative models chosen by an option
+    (``heat_model:skf``)."""
     return diagnosis.effect_registry(kind)
 
 
@@ -117,6 +125,7 @@ __all__ = [
     "BearingSolution",
     "Material",
     "ThermalState",
+    "lubrication_defaults",
     "stiffness_curve",
     "thermal_state",
     "thermal_state_many",

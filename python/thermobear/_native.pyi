@@ -364,6 +364,7 @@ class Spindle:
         radial_load_n: float | None = None,
         effects: list[str] | None = None,
         spin_friction: float | None = None,
+        heat: dict[str, Any] | None = None,
     ) -> Spindle: ...
     @property
     def name(self) -> str: ...
@@ -412,7 +413,7 @@ def thermal_state(
     radial_n: float,
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
-    lubrication_factor_f0: float = 1.0,
+    lubrication_factor_f0: Optional[float] = None,
     spin_friction: float = 0.06,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
@@ -421,7 +422,13 @@ def thermal_state(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
-    churning_oil_fraction: float = 0.0,
+    churning_oil_fraction: Optional[float] = None,
+    heat_model: str = "palmgren",
+    lubrication: Optional[str] = None,
+    skf_series: Optional[str] = None,
+    sliding_friction_ehl: Optional[float] = None,
+    replenishment_krs: Optional[float] = None,
+    seal_moment_nmm: float = 0.0,
 ) -> dict[str, Any]: ...
 def thermal_stiffness_curve(
     bearing: Bearing,
@@ -430,7 +437,7 @@ def thermal_stiffness_curve(
     radial_n: float,
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
-    lubrication_factor_f0: float = 1.0,
+    lubrication_factor_f0: Optional[float] = None,
     spin_friction: float = 0.06,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
@@ -439,7 +446,13 @@ def thermal_stiffness_curve(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
-    churning_oil_fraction: float = 0.0,
+    churning_oil_fraction: Optional[float] = None,
+    heat_model: str = "palmgren",
+    lubrication: Optional[str] = None,
+    skf_series: Optional[str] = None,
+    sliding_friction_ehl: Optional[float] = None,
+    replenishment_krs: Optional[float] = None,
+    seal_moment_nmm: float = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
 def thermal_state_many(
@@ -449,7 +462,7 @@ def thermal_state_many(
     radial_n: npt.NDArray[np.float64],
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
-    lubrication_factor_f0: float = 1.0,
+    lubrication_factor_f0: Optional[float] = None,
     spin_friction: float = 0.06,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
@@ -458,13 +471,21 @@ def thermal_state_many(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
-    churning_oil_fraction: float = 0.0,
+    churning_oil_fraction: Optional[float] = None,
+    heat_model: str = "palmgren",
+    lubrication: Optional[str] = None,
+    skf_series: Optional[str] = None,
+    sliding_friction_ehl: Optional[float] = None,
+    replenishment_krs: Optional[float] = None,
+    seal_moment_nmm: float = 0.0,
     threads: Optional[int] = None,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, Any]:
     """Columns of :func:`solve_many` plus temperatures, heat and thermal
     offsets per point; ``ok``, ``error_kind``, ``error``."""
 
+def lubrication_defaults(lubrication: str, bearing_type: str) -> dict[str, Any]: ...
+def skf_sliding_friction_ehl(lubricant: str) -> float: ...
 def seed_a_network_links(
     bearing: Bearing,
     speed_rpm: float,

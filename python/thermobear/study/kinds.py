@@ -118,6 +118,12 @@ def _check_lubricant(name: Any) -> None:
     _native.seed_a_network_links(Bearing.preset("6208")._b, 0.0, lubricant=str(name))
 
 
+def _check_lubrication(name: Any) -> None:
+    from .. import _native
+
+    _native.lubrication_defaults(str(name), "angular_contact")
+
+
 def _one_of(what: str, *values: str) -> Callable[[Any], None]:
     return _choice(lambda: list(values), what)
 
@@ -323,7 +329,9 @@ THERMAL = Kind(
             "material preset of the housing",
             check=_choice(_material_names, "housing_material"),
         ),
-        Param("lubrication_factor_f0", float, 1.0, "Palmgren f0 [-]"),
+        # Default None: what the model takes without it (f0 = 1 or the
+        # lubrication method's; no drag heat or the method's oil fraction).
+        Param("lubrication_factor_f0", float, None, "Palmgren f0 [-]"),
         Param("spin_friction", float, 0.06, "spin friction coefficient [-]"),
         Param("oil_air_temperature_c", float, 28.0, "oil-air supply temperature [C]"),
         Param("ambient_temperature_c", float, 26.0, "ambient temperature [C]"),
@@ -337,7 +345,21 @@ THERMAL = Kind(
         Param("misalignment_rad", float, 0.0, "inner-ring tilt, held [rad]"),
         Param("extra_heat_w", float, 0.0, "heat beyond the modelled friction [W]"),
         Param("housing_conductance_scale", float, 1.0, "scale of the housing convection [-]"),
-        Param("churning_oil_fraction", float, 0.0, "oil volume fraction of the oil-air mix [-]"),
+        Param("churning_oil_fraction", float, None, "oil volume fraction of the oil-air mix [-]"),
+        Param(
+            "heat_model",
+            str,
+            "palmgren",
+            "'palmgren' or 'skf' friction heat",
+            check=_one_of("heat_model", "palmgren", "skf"),
+        ),
+        Param(
+            "lubrication",
+            str,
+            None,
+            "lubrication method (sets f0 and oil fraction)",
+            check=_check_lubrication,
+        ),
     ),
     _THERMAL_OUTPUTS,
     _run_thermal,
@@ -533,7 +555,7 @@ def kinds_table() -> Any:
             "kind": k.name,
             "input": p.name,
             "type": p.type.__name__,
-            "default": "the preset's" if p.default is None else str(p.default),
+            "default": "(the model's own)" if p.default is None else str(p.default),
             "doc": p.doc,
         }
         for k in KINDS.values()

@@ -15,7 +15,7 @@ def thermal_state_many(
     *,
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
-    lubrication_factor_f0: float = 1.0,
+    lubrication_factor_f0: Optional[float] = None,
     spin_friction: float = 0.06,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
@@ -24,9 +24,12 @@ def thermal_state_many(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
-    churning_oil_fraction: float = 0.0,
+    churning_oil_fraction: Optional[float] = None,
+    heat_model: str = "palmgren",
+    lubrication: Optional[str] = None,
     threads: Optional[int] = None,
     progress: Any = None,
+    **heat: Any,
 ) -> "polars.DataFrame":  # noqa: F821
     """:func:`~thermobear.thermal_state` of a bearing at many operating
     points in one native call (rayon threads, GIL released, Ctrl-C within
@@ -34,8 +37,8 @@ def thermal_state_many(
 
     ``points``: a polars DataFrame (or mapping of columns) with any of
     ``speed_rpm``, ``axial_n``, ``radial_n`` (absent: 0); other columns are
-    carried through. Model options as in :func:`~thermobear.thermal_state`,
-    shared by every point; ``threads`` (default: all cores),
+    carried through. Model options (the heat model's included) as in
+    :func:`~thermobear.thermal_state`, shared by every point; ``threads`` (default: all cores),
     ``progress(done, total)``.
 
     Returns the input columns followed by the bearing outputs of
@@ -68,6 +71,9 @@ def thermal_state_many(
         extra_heat_w,
         housing_conductance_scale,
         churning_oil_fraction,
+        heat_model=heat_model,
+        lubrication=lubrication,
+        **heat,
     )
     raw = _native.thermal_state_many(
         bearing._b,
