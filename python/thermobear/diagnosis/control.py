@@ -35,6 +35,15 @@ CONTROL_MARGIN = 0.0
 #: has only the per-quantity control.
 CARRIERS = ("extra_heat_w",)
 
+#: The lead in chi^2 a named set needs over a carrier control to be told
+#: from an unknown source (:func:`matching_control`): the 95 % quantile of
+#: chi^2 with one degree of freedom. Were the unknown source the truth,
+#: the named set's chi^2 lead over it would have mean -D^2 - 1 and standard
+#: deviation about sqrt(4 D^2 + 2) (D: the distance of the two fits in
+#: sigma; the carrier fits one noise direction more); it exceeds 3.84 in
+#: at most about 2 % of data sets, whatever D (largest near D = 2).
+CARRIER_LEAD = 3.841
+
 
 @dataclass(frozen=True)
 class GenericControl:
@@ -141,3 +150,62 @@ def control_matches(ctrl: GenericControl, best: dict, margin: float) -> bool:
     """Whether the generic control explains the data as well as the best
     named candidate: its delta-BIC no more than ``margin`` below."""
     return ctrl.delta_bic > 0.0 and ctrl.delta_bic >= best["delta_bic"] - margin
+
+
+def carrier_lead_needed(k_named: int) -> float:
+    """The chi^2 lead a named set of ``k_named`` parameters needs over a
+    carrier control (two parameters): :data:`CARRIER_LEAD`, plus one per
+    parameter the named set has beyond the carrier's (each fits about one
+    unit of chi^2 of noise)."""
+    return CARRIER_LEAD + max(0, k_named - GENERIC_PARAMETERS)
+
+
+def explains_as_well(ctrl: GenericControl, row: dict) -> bool:
+    """Whether a named candidate (its screening row, against the same
+    setting as ``ctrl``) explains the data about as well as the control
+    that matched the accepted set: it passes the screening, does not sit at
+    a bound, and the control's lead over it is within
+    :data:`CARRIER_LEAD` -- in chi^2 for a carrier control, in delta-BIC
+    for the per-quantity control (its many parameters charged). Such
+    candidates are listed beside the accepted ones in an "unresolved"
+    verdict: the data cannot tell any of them from the unknown source."""
+    if not row.get("passes") or row.get("at_bound"):
+        return False
+    if ctrl.label.startswith("a generic term"):
+        return ctrl.delta_bic - row["delta_bic"] <= CARRIER_LEAD
+    return row["chi2"] - ctrl.chi2 <= CARRIER_LEAD
+
+
+def matching_control(data, pred0, chi2_named, k_named, carriers=None, margin=0.0):
+    """The control that explains the data as well as a named set of
+    ``k_named`` parameters whose fit from the setting ``pred0`` reaches
+    ``chi2_named``, or None. Two rules, one per kind of control:
+
+    * the per-quantity control (:func:`quantity_control`; two parameters
+      per quantity, flexible enough to absorb any smooth named effect one
+      quantity at a time, so only parsimony can favour the named set):
+      its delta-BIC no more than ``margin`` below the named set's;
+    * a carrier control (:func:`carrier_control`; an unknown source with
+      its own speed law, nesting nearly every named term of the same kind
+      whose speed law is smooth, one parameter more): the named set's
+      chi^2 no lower than the carrier's by more than
+      :func:`carrier_lead_needed` -- the parameter the carrier pays in BIC
+      is not counted in the named set's favour: the fit itself must be
+      better by more than noise allows (or BIC as above).
+
+    A control that does not itself lower BIC against the setting matches
+    nothing."""
+    n = data.n
+    gain = float(np.sum(data.residual(pred0) ** 2)) - chi2_named - k_named * np.log(n)
+    best = {"delta_bic": gain}
+    pq = quantity_control(data, pred0)
+    if control_matches(pq, best, margin):
+        return pq
+    for name, slope in (carriers or {}).items():
+        c = carrier_control(data, pred0, name, slope)
+        lead = c.chi2 - chi2_named
+        if c.delta_bic > 0.0 and (
+            control_matches(c, best, margin) or lead <= carrier_lead_needed(k_named)
+        ):
+            return c
+    return None

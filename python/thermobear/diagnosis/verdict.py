@@ -28,14 +28,17 @@ def _verdict_part(a: dict) -> str:
     )
 
 
-def unresolved_text(records: list, gain: float, ctrl) -> str:
+def unresolved_text(records: list, gain: float, ctrl, chi2_named=None, k_named=None) -> str:
     """The verdict when the generic control explains the data as well as
     the candidates the rounds would accept (``records``, delta-BIC ``gain``
-    together)."""
+    together; chi^2 ``chi2_named`` with ``k_named`` parameters)."""
     names = " + ".join(a["name"] for a in records)
+    fit_n = "" if chi2_named is None else f", chi^2 {chi2_named:.1f} with {k_named} parameter(s)"
+    fit_c = "" if chi2_named is None else f", chi^2 {ctrl.chi2:.1f} with {ctrl.n_parameters}"
     return (
-        f"unresolved: the data cannot tell a known effect ({names}, delta-BIC {gain:.1f}) "
-        f"from an unknown smooth one ({ctrl.label}, delta-BIC {ctrl.delta_bic:.1f})"
+        f"unresolved: the data cannot tell a known effect ({names}, delta-BIC {gain:.1f}"
+        f"{fit_n}) from an unknown smooth one ({ctrl.label}, delta-BIC "
+        f"{ctrl.delta_bic:.1f}{fit_c})"
     )
 
 

@@ -67,9 +67,10 @@ from .control import (
     CARRIERS,
     CONTROL_MARGIN,
     GenericControl,
-    control_matches,
     control_row,
+    explains_as_well,
     generic_control,
+    matching_control,
 )
 from .identifiability import identifiability
 from .measurements import MeasuredData, prepare_measurements
@@ -118,7 +119,7 @@ class _Search:
     tie: list = field(default_factory=list)
     ties: Any = None
     tie_gap: Any = None
-    unresolved: Optional[tuple[list, float, GenericControl]] = None
+    unresolved: Optional[tuple[list, float, GenericControl, float, int]] = None
     carriers: dict = field(default_factory=dict)
     screening: list = field(default_factory=list)
     fingerprints: Any = None
@@ -199,18 +200,39 @@ def _search(model, data: MeasuredData, pool, outside, rules: _Rules) -> _Search:
 
 def _control_check(s: _Search, pred0: np.ndarray, margin: float) -> None:
     """The generic control against what the rounds accepted: when a generic
-    smooth term (:func:`generic_control`), fitted to the baseline's
-    residual, gains as much BIC as the accepted candidates together (no
-    more than ``margin`` below), the data cannot tell them from an unknown
+    term fitted to the baseline's residual explains the data as well as
+    the accepted candidates together (:func:`matching_control`: the
+    per-quantity control by BIC, no more than ``margin`` below; a carrier
+    control by the chi^2 lead), the data cannot tell them from an unknown
     effect: they are withdrawn from ``accepted`` and reported as
     unresolved."""
     d = s.data
-    ctrl = generic_control(d, pred0, s.carriers)
     k = len(s.accepted)
-    gain = _chi2(d.residual(pred0)) - _chi2(d.residual(s.pred)) - k * np.log(d.n)
-    if control_matches(ctrl, {"delta_bic": gain}, margin):
-        s.unresolved = (list(s.accepted), gain, ctrl)
+    chi_named = _chi2(d.residual(s.pred))
+    ctrl = matching_control(d, pred0, chi_named, k, s.carriers, margin)
+    if ctrl is not None:
+        gain = _chi2(d.residual(pred0)) - chi_named - k * np.log(d.n)
+        records = list(s.accepted) + _also_unresolved(s, ctrl)
+        s.unresolved = (records, gain, ctrl, chi_named, k)
         s.accepted, s.accepted_cands = [], []
+
+
+def _also_unresolved(s: _Search, ctrl: GenericControl) -> list:
+    """The first round's other named candidates that explain the data as
+    well as the control (:func:`explains_as_well`): listed as unresolved
+    beside the accepted ones, so that the verdict names every known
+    candidate the data cannot tell from the unknown source."""
+    if not s.screening or s.screening[0].is_empty():
+        return []
+    taken = {a["name"] for a in s.accepted}
+    by_name = {c.name: c for c in s.pool}
+    out = []
+    for row in s.screening[0].iter_rows(named=True):
+        name = row["candidate"]
+        if name in taken or name not in by_name or not explains_as_well(ctrl, row):
+            continue
+        out.append(accepted_record(by_name[name], row, 0))
+    return out
 
 
 def _screening_round(s: _Search, rnd: int, rules: _Rules) -> bool:
@@ -247,7 +269,9 @@ def _screening_round(s: _Search, rnd: int, rules: _Rules) -> bool:
     rivals += significant_rivals(rows, fits, best, d, set(rivals))
     if rivals:
         s.tie = [best["candidate"]] + rivals
-        if ctrl is not None and control_matches(ctrl, best, CONTROL_MARGIN):
+        if ctrl is not None and matching_control(
+            d, s.pred, best["chi2"], 1, s.carriers, CONTROL_MARGIN
+        ):
             s.tie.append("generic_control")
         named = [m for m in s.tie if m in fits]
         s.ties = tie_table(named, rows, fits, curves, s, rules.envelope, rules.suggest)
