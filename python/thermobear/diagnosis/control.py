@@ -2,16 +2,22 @@
 measured quantity, ``a x + b x^2`` with ``x`` the speed over the highest
 measured speed (zero at standstill, like every speed-driven effect; two
 parameters per quantity). It is never a verdict of its own: when it explains
-the data as well as the best named candidate (its delta-BIC within the tie
-margin of the named one's, or above), the data cannot tell the known effect
-from an unknown one, and the verdict says so instead of naming it.
+the data as well as the best named candidate (:func:`matching_control`),
+the data cannot tell the known effect from an unknown one, and the verdict
+says so instead of naming it.
 
 Beside the per-quantity terms, a *carrier* control: an additive input of
 the model (:data:`CARRIERS`, e.g. the extra heat at the bearing) given a
 free smooth speed law ``h(x) = a x + b x^2``, acting through the model's
 own sensitivity of every row to that input (linearised at the setting:
 ``dm_i = S_i h(x_i)``) -- an unknown heat source, seen by every quantity
-the way heat is, with two parameters for all of them."""
+the way heat is, with two parameters for all of them.
+
+The rules (:func:`matching_control`): the per-quantity control matches by
+BIC (only parsimony can favour a named effect over two free parameters per
+quantity); a carrier matches unless the named set's chi^2 is lower than
+its own by more than :data:`CARRIER_LEAD` (the fit decides, not BIC's
+charge for the carrier's one extra parameter)."""
 
 from __future__ import annotations
 
@@ -38,10 +44,11 @@ CARRIERS = ("extra_heat_w",)
 #: The lead in chi^2 a named set needs over a carrier control to be told
 #: from an unknown source (:func:`matching_control`): the 95 % quantile of
 #: chi^2 with one degree of freedom. Were the unknown source the truth,
-#: the named set's chi^2 lead over it would have mean -D^2 - 1 and standard
-#: deviation about sqrt(4 D^2 + 2) (D: the distance of the two fits in
-#: sigma; the carrier fits one noise direction more); it exceeds 3.84 in
-#: at most about 2 % of data sets, whatever D (largest near D = 2).
+#: the named set's chi^2 lead over it would have mean about -D^2 - 1 and
+#: standard deviation about sqrt(4 D^2 + 2) (D: the distance of the two
+#: fits in sigma; the carrier fits one noise direction more); it exceeds
+#: 3.84 in at most about 2 % of data sets, whatever D and however the
+#: named direction leans out of the carrier's (largest at small D).
 CARRIER_LEAD = 3.841
 
 

@@ -26,9 +26,11 @@ this package):
    no rival in a tie (:mod:`.ties`: within delta-BIC 2, or a lead noise
    could produce; a rival at its bound is none). Accepted effects join the
    setting and the screening repeats while the residual fails the chi^2
-   test at 1 %. Then the generic control (:mod:`.control`) is compared with
-   what was accepted, and the outlier audit (:mod:`.outliers`) runs on the
-   best fit: flagged points are left out and the search runs again;
+   test at 1 %. Then the generic controls (:mod:`.control`) are compared
+   with what was accepted (per-quantity control: by BIC; carrier control:
+   the named set must fit better by more than 3.84 in chi^2), and the
+   outlier audit (:mod:`.outliers`) runs on the best fit: flagged points
+   are left out and the search runs again;
 5. a verdict that says what each accepted candidate is: a missing effect
    (a registry switch or a term the baseline leaves out), a miscalibrated
    baseline input (f0, spin friction coefficient, cooling and ambient
