@@ -30,7 +30,9 @@ class Diagnosis:
     alone, where to measure to separate it); ``tie_gap``: the gap table
     after each member; ``outliers``: the points the robust audit left out;
     ``unresolved``: the candidates the rounds would have accepted when the
-    generic control explains the data as well (then ``accepted`` is empty)."""
+    generic control explains the data as well (then ``accepted`` is empty),
+    and, marked ``alternative``, the other first-round candidates that
+    explain the data as well as the control."""
 
     audit: Any
     fingerprints: Any

@@ -31,13 +31,17 @@ def _verdict_part(a: dict) -> str:
 def unresolved_text(records: list, gain: float, ctrl, chi2_named=None, k_named=None) -> str:
     """The verdict when the generic control explains the data as well as
     the candidates the rounds would accept (``records``, delta-BIC ``gain``
-    together; chi^2 ``chi2_named`` with ``k_named`` parameters)."""
-    names = " + ".join(a["name"] for a in records)
+    together; chi^2 ``chi2_named`` with ``k_named`` parameters; records
+    marked ``alternative``: other candidates that explain the data as well,
+    listed after "or")."""
+    names = " + ".join(a["name"] for a in records if not a.get("alternative"))
+    others = [a["name"] for a in records if a.get("alternative")]
     fit_n = "" if chi2_named is None else f", chi^2 {chi2_named:.1f} with {k_named} parameter(s)"
     fit_c = "" if chi2_named is None else f", chi^2 {ctrl.chi2:.1f} with {ctrl.n_parameters}"
+    alt = "".join(f"; or {n}" for n in others)
     return (
         f"unresolved: the data cannot tell a known effect ({names}, delta-BIC {gain:.1f}"
-        f"{fit_n}) from an unknown smooth one ({ctrl.label}, delta-BIC "
+        f"{fit_n}{alt}) from an unknown smooth one ({ctrl.label}, delta-BIC "
         f"{ctrl.delta_bic:.1f}{fit_c})"
     )
 

@@ -233,7 +233,7 @@ def _also_unresolved(s: _Search, ctrl: GenericControl) -> list:
         name = row["candidate"]
         if name in taken or name not in by_name or not explains_as_well(ctrl, row):
             continue
-        out.append(accepted_record(by_name[name], row, 0))
+        out.append(accepted_record(by_name[name], row, 0) | {"alternative": True})
     return out
 
 
