@@ -36,7 +36,7 @@
 use super::gear_model::HelicalPairSystem;
 use super::poincare::PoincareRecord;
 #[cfg(target_arch = "x86_64")]
-use super::simd::{Avx4, Avx512, Avx8, Sse2};
+use super::simd::Avx512;
 use super::simd::{Lanes, Portable, Simd};
 use crate::{Error, Result};
 
@@ -73,13 +73,25 @@ pub(crate) struct Coef<T> {
 }
 
 impl<T> Coef<T> {
-    fn map<U>(&self, f: impl Fn(&T) -> U) -> Coef<U> {
+    #[inline(always)]
+    fn map<U: Copy>(&self, f: impl Fn(&T) -> U) -> Coef<U> {
+        // Plain loops (`array::map` need not inline).
+        let z = f(&self.g6);
+        let (mut a, mut nk, mut nc, mut na) = ([z; 7], [z; 6], [z; 6], [z; 7]);
+        for i in 0..7 {
+            a[i] = f(&self.a[i]);
+            na[i] = f(&self.na[i]);
+        }
+        for i in 0..6 {
+            nk[i] = f(&self.nk[i]);
+            nc[i] = f(&self.nc[i]);
+        }
         Coef {
-            a: self.a.each_ref().map(&f),
-            nk: self.nk.each_ref().map(&f),
-            nc: self.nc.each_ref().map(&f),
-            na: self.na.each_ref().map(&f),
-            g6: f(&self.g6),
+            a,
+            nk,
+            nc,
+            na,
+            g6: z,
             cm: f(&self.cm),
             cg: f(&self.cg),
             hh: f(&self.hh),
@@ -147,9 +159,6 @@ impl HelicalKernel {
     /// One RK4 step of two states of this system in lock-step.
     #[inline(always)]
     pub fn step_pair(&self, n: usize, x: &mut [f64; 14], y: &mut [f64; 14]) {
-        #[cfg(target_arch = "x86_64")]
-        self.step_pair_v::<Sse2>(n, x, y);
-        #[cfg(not(target_arch = "x86_64"))]
         self.step_pair_v::<Portable<2>>(n, x, y);
     }
 
@@ -157,8 +166,14 @@ impl HelicalKernel {
     fn step_pair_v<V: Lanes<2>>(&self, n: usize, x: &mut [f64; 14], y: &mut [f64; 14]) {
         let (j0, j1, j2) = self.stages(n);
         let c = self.coef.map(|&v| V::splat(v));
-        let g = |j: usize| self.grid[j].map(V::splat);
-        let mut v: [V; 14] = std::array::from_fn(|i| V::load(&[x[i], y[i]]));
+        let g = |j: usize| {
+            let r = &self.grid[j];
+            [V::splat(r[0]), V::splat(r[1]), V::splat(r[2]), V::splat(r[3])]
+        };
+        let mut v = [V::splat(0.0); 14];
+        for i in 0..14 {
+            v[i] = V::load(&[x[i], y[i]]);
+        }
         rk4_kernel(&c, &g(j0), &g(j1), &g(j2), &mut v);
         for i in 0..14 {
             let mut o = [0.0; 2];
@@ -202,30 +217,59 @@ fn stage<V: Simd>(c: &Coef<V>, g: &[V; 4], d: V, q: &[V; 6], v: &[V; 7]) -> (V, 
     (dv, acc)
 }
 
+/// Stage positions of the bearing coordinates `x_q + s v`.
+#[inline(always)]
+fn stage_q<V: Simd>(xq: &[V; 7], s: V, v: &[V; 7]) -> [V; 6] {
+    let mut q = [s; 6];
+    for i in 0..6 {
+        q[i] = xq[i].add(s.mul(v[i]));
+    }
+    q
+}
+
+/// Stage velocities `x_v + s k`.
+#[inline(always)]
+fn stage_v<V: Simd>(xv: &[V; 7], s: V, k: &[V; 7]) -> [V; 7] {
+    let mut v = [s; 7];
+    for i in 0..7 {
+        v[i] = xv[i].add(s.mul(k[i]));
+    }
+    v
+}
+
 /// One classical RK4 step of the helical pair on lanes `V`; `g0, g1, g2` are
 /// the grid rows at `t_n`, `t_n + h/2`, `t_n + h`.
 #[inline(always)]
 pub(crate) fn rk4_kernel<V: Simd>(c: &Coef<V>, g0: &[V; 4], g1: &[V; 4], g2: &[V; 4], x: &mut [V; 14]) {
-    let xq: [V; 7] = std::array::from_fn(|i| x[i]);
-    let xv: [V; 7] = std::array::from_fn(|i| x[7 + i]);
-    let bq = |s: V, v: &[V; 7]| -> [V; 6] { std::array::from_fn(|i| xq[i].add(s.mul(v[i]))) };
-    let bv = |s: V, k: &[V; 7]| -> [V; 7] { std::array::from_fn(|i| xv[i].add(s.mul(k[i]))) };
+    // Plain loops and functions throughout (closures and `array::from_fn`
+    // need not inline).
+    let z = V::splat(0.0);
+    let (mut xq, mut xv) = ([z; 7], [z; 7]);
+    xq.copy_from_slice(&x[..7]);
+    xv.copy_from_slice(&x[7..]);
     let d0 = dot7(&c.a, &xq);
-    let q1: [V; 6] = std::array::from_fn(|i| xq[i]);
+    let mut q1 = [z; 6];
+    q1.copy_from_slice(&xq[..6]);
     let (dv1, k1) = stage(c, g0, d0, &q1, &xv);
-    let v2 = bv(c.hh, &k1);
-    let (dv2, k2) = stage(c, g1, d0.add(c.hh.mul(dv1)), &bq(c.hh, &xv), &v2);
-    let v3 = bv(c.hh, &k2);
-    let q3 = bq(c.hh, &v2);
+    let v2 = stage_v(&xv, c.hh, &k1);
+    let (dv2, k2) = stage(c, g1, d0.add(c.hh.mul(dv1)), &stage_q(&xq, c.hh, &xv), &v2);
+    let v3 = stage_v(&xv, c.hh, &k2);
+    let q3 = stage_q(&xq, c.hh, &v2);
     // x += h/6 (k1 + 2 (k2 + k3) + k4), the position slopes being the stage
     // velocities; partial sums formed as soon as their terms exist (fewer
     // live registers).
     let two = V::splat(2.0);
-    let sq: [V; 7] = std::array::from_fn(|i| xv[i].add(two.mul(v2[i].add(v3[i]))));
+    let mut sq = [z; 7];
+    for i in 0..7 {
+        sq[i] = xv[i].add(two.mul(v2[i].add(v3[i])));
+    }
     let (dv3, k3) = stage(c, g1, d0.add(c.hh.mul(dv2)), &q3, &v3);
-    let v4 = bv(c.h, &k3);
-    let q4 = bq(c.h, &v3);
-    let sv: [V; 7] = std::array::from_fn(|i| k1[i].add(two.mul(k2[i].add(k3[i]))));
+    let v4 = stage_v(&xv, c.h, &k3);
+    let q4 = stage_q(&xq, c.h, &v3);
+    let mut sv = [z; 7];
+    for i in 0..7 {
+        sv[i] = k1[i].add(two.mul(k2[i].add(k3[i])));
+    }
     let (_, k4) = stage(c, g2, d0.add(c.h.mul(dv3)), &q4, &v4);
     for i in 0..7 {
         x[i] = xq[i].add(c.h6.mul(sq[i].add(v4[i])));
@@ -286,7 +330,7 @@ impl<const L: usize> HelicalBatch<L> {
     /// One RK4 step of every lane from step `n` (< steps per period), with
     /// the portable kernel (the sweeps use the detected instruction set).
     pub fn step(&self, n: usize, x: &mut BatchState<L>) {
-        let c = self.coef.map(|v| Portable::<L>::load(v));
+        let c = self.coef.map(Portable::<L>::load);
         let mut v = load_state::<L, Portable<L>>(x);
         self.step_v(&c, n, &mut v);
         store_state(&v, x);
@@ -295,7 +339,10 @@ impl<const L: usize> HelicalBatch<L> {
     #[inline(always)]
     fn step_v<V: Lanes<L>>(&self, c: &Coef<V>, n: usize, x: &mut [V; 14]) {
         let (j0, j1, j2) = stage_indices(n, self.grid.len());
-        let row = |j: usize| -> [V; 4] { self.grid[j].each_ref().map(|r| V::load(r)) };
+        let row = |j: usize| -> [V; 4] {
+            let g = &self.grid[j];
+            [V::load(&g[0]), V::load(&g[1]), V::load(&g[2]), V::load(&g[3])]
+        };
         rk4_kernel(c, &row(j0), &row(j1), &row(j2), x);
     }
 
@@ -304,8 +351,8 @@ impl<const L: usize> HelicalBatch<L> {
     #[inline(always)]
     fn deflection_v<V: Lanes<L>>(&self, c: &Coef<V>, j: usize, x: &[V; 14]) -> V {
         let mut s = c.a[0].mul(x[0]);
-        for i in 1..7 {
-            s = s.add(c.a[i].mul(x[i]));
+        for (ai, xi) in c.a.iter().zip(x).skip(1) {
+            s = s.add(ai.mul(*xi));
         }
         s.sub(V::load(&self.error[j]))
     }
@@ -313,7 +360,11 @@ impl<const L: usize> HelicalBatch<L> {
 
 #[inline(always)]
 fn load_state<const L: usize, V: Lanes<L>>(x: &BatchState<L>) -> [V; 14] {
-    x.each_ref().map(|r| V::load(r))
+    let mut v = [V::splat(0.0); 14];
+    for (vi, xi) in v.iter_mut().zip(x) {
+        *vi = V::load(xi);
+    }
+    v
 }
 
 #[inline(always)]
@@ -349,7 +400,8 @@ fn check_isa(isa: Isa) -> Result<()> {
     }
 }
 
-/// Run `job` with the lane type of `isa` for `L` lanes (`isa` available).
+/// Run `job` for `L` lanes with `isa` (available): lane arrays compiled for
+/// that instruction set, one lane as plain `f64`.
 fn dispatch<const L: usize, J: Job<L>>(isa: Isa, job: J) -> J::Out {
     #[cfg(target_arch = "x86_64")]
     {
@@ -358,12 +410,9 @@ fn dispatch<const L: usize, J: Job<L>>(isa: Isa, job: J) -> J::Out {
             // CPU has AVX-512F and AVX2.
             return unsafe { run_avx512(job) };
         }
-        if (L == 4 || L == 8) && isa >= Isa::Avx2 {
+        if L >= 4 && isa >= Isa::Avx2 {
             // SAFETY: as above, the CPU has AVX2.
             return unsafe { run_avx2(job) };
-        }
-        if L == 2 {
-            return job.run::<Sse2>();
         }
     }
     let _ = isa;
@@ -376,11 +425,7 @@ fn dispatch<const L: usize, J: Job<L>>(isa: Isa, job: J) -> J::Out {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn run_avx2<const L: usize, J: Job<L>>(job: J) -> J::Out {
-    if L == 4 {
-        job.run::<Avx4>()
-    } else {
-        job.run::<Avx8>()
-    }
+    job.run::<Portable<L>>()
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -438,94 +483,149 @@ pub fn advance_batch_with<const L: usize>(
 
 // ------------------------------------------------------------ sampling ----
 
-struct Sample<'a, const L: usize> {
+/// What the recorded periods observe after every step: the relative
+/// deflection's extremes and (first period) the state's extremes.
+struct Observe<const L: usize> {
+    lo: [f64; L],
+    hi: [f64; L],
+    smin: BatchState<L>,
+    smax: BatchState<L>,
+    track_state: bool,
+}
+
+/// `periods` whole mesh periods from step 0; the target-feature entry
+/// points stay this small (the per-period bookkeeping is outside), which
+/// keeps the compiler inlining every lane operation into them.
+struct Periods<'a, const L: usize> {
     batch: &'a HelicalBatch<L>,
-    starts: &'a [[f64; 14]; L],
-    transient_periods: usize,
-    recorded_periods: usize,
+    x: &'a mut BatchState<L>,
+    periods: usize,
+    observe: Option<&'a mut Observe<L>>,
 }
 
-fn all_finite<const L: usize, V: Lanes<L>>(x: &[V; 14]) -> bool {
-    let mut a = [[0.0; L]; 14];
-    store_state(x, &mut a);
-    a.iter().all(|r| r.iter().all(|v| v.is_finite()))
-}
-
-impl<const L: usize> Job<L> for Sample<'_, L> {
-    type Out = Result<[PoincareRecord<14>; L]>;
+impl<const L: usize> Job<L> for Periods<'_, L> {
+    type Out = ();
     #[inline(always)]
-    fn run<V: Lanes<L>>(self) -> Self::Out {
+    fn run<V: Lanes<L>>(self) {
         let b = self.batch;
-        if self.recorded_periods == 0 {
-            return Err(Error::config("recorded_periods", 0, "must be at least 1"));
-        }
         let c = b.coef.map(|v| V::load(v));
         let per = b.grid_len() / 2;
-        let mut x = load_state::<L, V>(&pack(self.starts));
-        for p in 0..self.transient_periods {
-            for n in 0..per {
-                b.step_v(&c, n, &mut x);
-            }
-            if !all_finite::<L, V>(&x) {
-                return Err(Error::convergence(
-                    "rk4 (state diverged in transient)",
-                    p * per,
-                    f64::INFINITY,
-                    0.0,
-                ));
-            }
-        }
-        let rec = self.recorded_periods;
-        let mut points = vec![Vec::with_capacity(rec); L];
-        let mut obs = vec![Vec::with_capacity(rec); L];
-        let mut lo = V::splat(f64::INFINITY);
-        let mut hi = V::splat(f64::NEG_INFINITY);
-        let mut smin = x;
-        let mut smax = x;
-        let mut xa = [[0.0; L]; 14];
-        for p in 0..rec {
-            store_state(&x, &mut xa);
-            let mut o0 = [0.0; L];
-            b.deflection_v(&c, 0, &x).store(&mut o0);
-            for l in 0..L {
-                points[l].push(lane(&xa, l));
-                obs[l].push(o0[l]);
-            }
-            for n in 0..per {
-                b.step_v(&c, n, &mut x);
-                let next = if n + 1 == per { 0 } else { n + 1 };
-                let o = b.deflection_v(&c, 2 * next, &x);
-                lo = lo.min(o);
-                hi = hi.max(o);
-                if p == 0 {
-                    for i in 0..14 {
-                        smin[i] = smin[i].min(x[i]);
-                        smax[i] = smax[i].max(x[i]);
+        let mut x = load_state::<L, V>(self.x);
+        match self.observe {
+            None => {
+                for _ in 0..self.periods {
+                    for n in 0..per {
+                        b.step_v(&c, n, &mut x);
                     }
                 }
             }
-            if !all_finite::<L, V>(&x) {
-                return Err(Error::convergence("rk4 (state diverged)", p * per, f64::INFINITY, 0.0));
+            Some(o) => {
+                let (mut lo, mut hi) = (V::load(&o.lo), V::load(&o.hi));
+                let (mut smin, mut smax) = (load_state::<L, V>(&o.smin), load_state::<L, V>(&o.smax));
+                for _ in 0..self.periods {
+                    for n in 0..per {
+                        b.step_v(&c, n, &mut x);
+                        let next = if n + 1 == per { 0 } else { n + 1 };
+                        let d = b.deflection_v(&c, 2 * next, &x);
+                        lo = lo.min(d);
+                        hi = hi.max(d);
+                        if o.track_state {
+                            for i in 0..14 {
+                                smin[i] = smin[i].min(x[i]);
+                                smax[i] = smax[i].max(x[i]);
+                            }
+                        }
+                    }
+                }
+                lo.store(&mut o.lo);
+                hi.store(&mut o.hi);
+                store_state(&smin, &mut o.smin);
+                store_state(&smax, &mut o.smax);
             }
         }
-        let (mut lo_a, mut hi_a) = ([0.0; L], [0.0; L]);
-        lo.store(&mut lo_a);
-        hi.store(&mut hi_a);
-        let (mut smin_a, mut smax_a) = ([[0.0; L]; 14], [[0.0; L]; 14]);
-        store_state(&smin, &mut smin_a);
-        store_state(&smax, &mut smax_a);
-        store_state(&x, &mut xa);
-        let mut points = points.into_iter();
-        let mut obs = obs.into_iter();
-        Ok(std::array::from_fn(|l| PoincareRecord {
-            points: points.next().unwrap_or_default(),
-            observable: obs.next().unwrap_or_default(),
-            observable_min: lo_a[l],
-            observable_max: hi_a[l],
-            state_range: std::array::from_fn(|i| smax_a[i][l] - smin_a[i][l]),
-            final_state: lane(&xa, l),
-        }))
+        store_state(&x, self.x);
     }
+}
+
+fn all_finite<const L: usize>(x: &BatchState<L>) -> bool {
+    x.iter().all(|r| r.iter().all(|v| v.is_finite()))
+}
+
+/// Relative deflection `delta_n - e` of every lane at step 0, in the
+/// summation order of `HelicalPairSystem::relative_deflection_m`.
+fn section_deflection<const L: usize>(b: &HelicalBatch<L>, x: &BatchState<L>) -> [f64; L] {
+    let c = b.coef.map(Portable::<L>::load);
+    let mut d = [0.0; L];
+    b.deflection_v(&c, 0, &load_state::<L, Portable<L>>(x)).store(&mut d);
+    d
+}
+
+fn sample<const L: usize>(
+    isa: Isa,
+    b: &HelicalBatch<L>,
+    starts: &[[f64; 14]; L],
+    transient_periods: usize,
+    recorded_periods: usize,
+) -> Result<[PoincareRecord<14>; L]> {
+    if recorded_periods == 0 {
+        return Err(Error::config("recorded_periods", 0, "must be at least 1"));
+    }
+    let per = b.grid_len() / 2;
+    let mut x = pack(starts);
+    for p in 0..transient_periods {
+        let job = Periods {
+            batch: b,
+            x: &mut x,
+            periods: 1,
+            observe: None,
+        };
+        dispatch(isa, job);
+        if !all_finite(&x) {
+            return Err(Error::convergence(
+                "rk4 (state diverged in transient)",
+                p * per,
+                f64::INFINITY,
+                0.0,
+            ));
+        }
+    }
+    let mut points = vec![Vec::with_capacity(recorded_periods); L];
+    let mut obs = vec![Vec::with_capacity(recorded_periods); L];
+    let mut o = Observe {
+        lo: [f64::INFINITY; L],
+        hi: [f64::NEG_INFINITY; L],
+        smin: x,
+        smax: x,
+        track_state: true,
+    };
+    for p in 0..recorded_periods {
+        let d0 = section_deflection(b, &x);
+        for l in 0..L {
+            points[l].push(lane(&x, l));
+            obs[l].push(d0[l]);
+        }
+        o.track_state = p == 0;
+        let job = Periods {
+            batch: b,
+            x: &mut x,
+            periods: 1,
+            observe: Some(&mut o),
+        };
+        dispatch(isa, job);
+        if !all_finite(&x) {
+            return Err(Error::convergence("rk4 (state diverged)", p * per, f64::INFINITY, 0.0));
+        }
+    }
+    let mut points = points.into_iter();
+    let mut obs = obs.into_iter();
+    Ok(std::array::from_fn(|l| PoincareRecord {
+        points: points.next().unwrap_or_default(),
+        observable: obs.next().unwrap_or_default(),
+        observable_min: o.lo[l],
+        observable_max: o.hi[l],
+        state_range: std::array::from_fn(|i| o.smax[i][l] - o.smin[i][l]),
+        final_state: lane(&x, l),
+    }))
 }
 
 /// Lock-step version of [`super::poincare::poincare_sample`] with the
@@ -552,15 +652,7 @@ pub fn poincare_sample_batch_with<const L: usize>(
     recorded_periods: usize,
 ) -> Result<[PoincareRecord<14>; L]> {
     check_isa(isa)?;
-    dispatch(
-        isa,
-        Sample {
-            batch,
-            starts,
-            transient_periods,
-            recorded_periods,
-        },
-    )
+    sample(isa, batch, starts, transient_periods, recorded_periods)
 }
 
 fn sample_group<const L: usize>(
