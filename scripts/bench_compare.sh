@@ -65,6 +65,7 @@ if [ "$save" = 1 ]; then
         echo "cpu: $(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | sed 's/^ //')"
         echo "cores: $(nproc 2>/dev/null || echo ?)"
         echo "rustc: $(rustc --version)"
+        echo "load average while saving: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo ?)"
     } > "$baseline_dir/MACHINE.txt"
     echo "baseline saved to $baseline_dir"
     exit 0
