@@ -29,6 +29,8 @@
 //! extra_heat_w = 0.0               # optional coupled-thermal calibration inputs
 //! housing_conductance_scale = 1.0
 //! churning_oil_fraction = 0.0      # oil volume fraction of the cavity mixture (0..1)
+//! heat_model = "palmgren"          # or "skf" (docs/concepts/physics.md §9)
+//! # lubrication = "jet"            # grease, oil-air, oil-mist, jet, oil-bath
 //! ```
 
 use serde::Deserialize;
@@ -176,6 +178,13 @@ pub struct ModelConfig {
     /// (0..1, dimensionless) for the ball drag heat (coupled thermal model;
     /// see [`crate::thermal::coupled::CoupledOptions::churning_oil_fraction`]).
     pub churning_oil_fraction: Option<f64>,
+    /// Heat model: "palmgren" (default) or "skf" (docs/concepts/physics.md §9).
+    pub heat_model: Option<String>,
+    /// Lubrication method ("grease", "oil-air", "oil-mist", "jet",
+    /// "oil-bath"); its defaults fill f0 and the drag oil fraction when the
+    /// `[bearing]` section is there and `churning_oil_fraction` is not given
+    /// ([`crate::thermal::friction::Lubrication::defaults`]).
+    pub lubrication: Option<String>,
 }
 
 impl SystemConfig {
@@ -232,6 +241,20 @@ impl SystemConfig {
                 o.housing_conductance_scale = k;
             }
             if let Some(x) = m.churning_oil_fraction {
+                o.churning_oil_fraction = x;
+            }
+            if let Some(h) = &m.heat_model {
+                o.heat_model = crate::thermal::friction::HeatModel::from_name(h)?;
+            }
+            if let Some(l) = &m.lubrication {
+                let kind = match &self.bearing {
+                    Some(_) => self.bearing()?.geometry.bearing_type,
+                    None => crate::bearing::BearingType::AngularContact,
+                };
+                let (lub, f0, x) =
+                    crate::thermal::friction::resolve_lubrication(Some(l), kind, None, m.churning_oil_fraction)?;
+                o.lubrication = lub;
+                o.lubrication_factor_f0 = f0;
                 o.churning_oil_fraction = x;
             }
         }
@@ -527,6 +550,27 @@ mod tests {
                 Err(Error::Config { field, .. }) => assert_eq!(field, "churning_oil_fraction"),
                 other => panic!("{bad}: {other:?}"),
             }
+        }
+    }
+
+    #[test]
+    fn model_heat_model_and_lubrication_parse() {
+        use crate::thermal::coupled::CoupledOptions;
+        use crate::thermal::friction::{HeatModel, Lubrication};
+        let with = |body: &str| SystemConfig::from_toml(&format!("[model]\n{body}\n")).unwrap();
+        let o = with("heat_model = \"skf\"\nlubrication = \"jet\"")
+            .coupled_options(CoupledOptions::default())
+            .unwrap();
+        assert_eq!((o.heat_model, o.lubrication), (HeatModel::Skf, Lubrication::Jet));
+        // No [bearing]: the angular-contact jet defaults (f0 6.6, X 3 %).
+        assert_eq!((o.lubrication_factor_f0, o.churning_oil_fraction), (6.6, 0.03));
+        match with("heat_model = \"harris\"").coupled_options(CoupledOptions::default()) {
+            Err(Error::Config { field, .. }) => assert_eq!(field, "heat_model"),
+            other => panic!("{other:?}"),
+        }
+        match with("lubrication = \"water\"").coupled_options(CoupledOptions::default()) {
+            Err(Error::Config { field, .. }) => assert_eq!(field, "lubrication"),
+            other => panic!("{other:?}"),
         }
     }
 }

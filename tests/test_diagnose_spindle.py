@@ -176,13 +176,13 @@ def test_seed_b_study_quick(tmp_path):
     assert "verdict:" in text
     models = pl.read_csv(tmp_path / "diagnose_seed_b_models.csv")
     vib = models.filter(pl.col("quantity") == "velocity_rms_mm_s")
-    # our G2.5 rotor is hundreds of times below the measured 18.92 mm/s and
-    # no candidate closes that: the vibration residual survives the diagnosis
+    # our G2.5 rotor is hundreds of times below the measured 18.92 mm/s; no
+    # physical effect of the model closes that, only the measurement-side
+    # runout of the vibrometer's track: 18.92 mm/s RMS at 18,000 rpm is
+    # omega eps / sqrt 2 with eps = 14.2 um (inside its 0-50 um bounds)
     assert vib["measured_over_ours_without"][0] > 100.0
-    gap = pl.read_csv(tmp_path / "diagnose_seed_b_gap.csv")
-    g = gap.filter(pl.col("quantity") == "velocity_rms_mm_s")
-    assert g["rms_after_sigma"][0] > 10.0
-    assert "unexplained" in text
+    assert "runout_um" in text and "14.2 um" in text
+    assert "unbalance_grade" not in text.split("held-out")[0].split("look-alikes")[0]
 
 
 def test_without_axial_growth_thermal_displacement_is_only_a_look_alike(base):

@@ -72,7 +72,7 @@ def test_linear_limit_eigenfrequencies_match_numpy(seed_system: tb.GearSystem) -
             "axial_stiffness_n_per_m": [5e13],
         }
     )
-    rigid = tb.GearSystem(seed_system.gear, stiffness=df)
+    rigid = tb.GearSystem(seed_system.gear, stiffness=df, bearing_stiffness_per="bearing")
     f0 = rigid.natural_frequencies_hz(10_000.0)[0]
     cb = math.cos(math.radians(p["helix_angle_deg"]))
     expect = math.sqrt(km * cb * cb / me) / (2 * math.pi)
@@ -117,7 +117,7 @@ def test_bearing_support_is_two_bearings_in_parallel(pair: tb.GearPair) -> None:
         2 * one["axial_stiffness_n_per_m"].to_numpy(),
         rtol=1e-6,
     )
-    via_frame = tb.GearSystem(pair, stiffness=one)
+    via_frame = tb.GearSystem(pair, stiffness=one, bearing_stiffness_per="bearing")
     for s in (7000.0, 12000.0):
         assert via_frame.bearing_stiffness_at(s) == pytest.approx(sys.bearing_stiffness_at(s))
 
@@ -182,9 +182,9 @@ def test_bad_input_raises_config_error(pair: tb.GearPair, seed_system: tb.GearSy
         {"speed_rpm": [0.0], "radial_stiffness_n_per_m": [-1e8], "axial_stiffness_n_per_m": [1e8]}
     )
     with pytest.raises(tb.ConfigError, match="kr_n_per_m"):
-        tb.GearSystem(pair, stiffness=bad)
+        tb.GearSystem(pair, stiffness=bad, bearing_stiffness_per="bearing")
     with pytest.raises(tb.ConfigError, match="half_backlash"):
-        tb.GearSystem(pair, backlash_um=0.0)
+        tb.GearSystem(pair, half_backlash_um=0.0)
     with pytest.raises(tb.ConfigError, match="mesh_damping"):
         tb.GearSystem(pair, mesh_damping="sometimes")
     with pytest.raises(tb.ConfigError, match="stiffness"):
@@ -192,7 +192,7 @@ def test_bad_input_raises_config_error(pair: tb.GearPair, seed_system: tb.GearSy
     with pytest.raises(tb.ConfigError, match="direction"):
         tb.bifurcation(seed_system, [10_000.0], "sideways")
     with pytest.raises(tb.ConfigError, match="speeds"):
-        tb.bifurcation(seed_system, [12_000.0, 10_000.0], "up", 10, 4)
+        tb.bifurcation(seed_system, [12_000.0, 10_000.0, 12_000.0], "up", 10, 4)
 
 
 def test_seed_torque_is_period_one_without_impacts(seed_system: tb.GearSystem) -> None:
@@ -227,7 +227,7 @@ def test_chaos_at_light_torque_and_large_error(pair: tb.GearPair) -> None:
     chaotic = per.filter(pl.col("regime") == "chaotic")
     assert chaotic.height >= 1, per
     assert (chaotic["impact"] == "double-sided").all()
-    assert (chaotic["lyapunov_per_period"] > 0.01).all()
+    assert (chaotic["lyapunov_per_mesh_period"] > 0.01).all()
     s = chaotic["speed_rpm"][0]
     assert tb.largest_lyapunov(light, s, periods=200) > 0.0
 
@@ -330,7 +330,8 @@ def test_quick_demo_study_writes_its_tables(tmp_path) -> None:
     # The seed operating point: period-1 without impacts everywhere.
     assert set(seed["regime"]) == {"period-1"} and set(seed["impact"]) == {"no-impact"}
     d = pl.read_parquet(tmp_path / "gear_defaults.parquet")
-    assert d.filter(pl.col("parameter") == "backlash_um")["value"][0] == pytest.approx(100.0)
+    assert d.filter(pl.col("parameter") == "backlash_total_um")["value"][0] == pytest.approx(100.0)
+    assert d.filter(pl.col("parameter") == "half_backlash_um")["value"][0] == pytest.approx(50.0)
 
 
 def test_ctrl_c_interrupts_a_long_sweep(seed_system: tb.GearSystem) -> None:

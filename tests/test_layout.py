@@ -28,7 +28,7 @@ LAYERS: list[tuple[str, ...]] = [
     ("thermobear.gear", "thermobear.spindle", "thermobear.rotor"),
     ("thermobear.diagnosis",),
     ("thermobear.plot",),
-    ("thermobear.studies",),
+    ("thermobear.studies", "thermobear.validation"),
     ("thermobear.cli",),
     ("thermobear", "thermobear.__main__"),
 ]

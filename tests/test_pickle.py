@@ -156,7 +156,7 @@ def test_gear_pair_and_gear_system_with_settings_bit_identical():
     _identical(pair._g.typo_warnings(), p2._g.typo_warnings())
     system = tb.GearSystem(
         pair,
-        backlash_um=60.0,
+        backlash_total_um=60.0,
         mesh_damping="always",
         mesh_damping_ratio=0.05,
         bearing_damping_ratio=0.03,

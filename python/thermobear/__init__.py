@@ -15,10 +15,23 @@ or below; ``tests/test_layout.py`` checks it):
   ``rotor`` -- the machines;
 * ``diagnosis`` -- model against measurements, step by step;
 * ``plot`` -- figures, one module per topic;
-* ``studies`` (the seed studies, ``thermobear demo``) and ``cli`` on top.
+* ``studies`` (the seed studies, ``thermobear demo``) and ``validation``
+  (published data sets, ``thermobear validate``), ``cli`` on top.
 """
 
-from . import _native, bearing, config, diagnosis, errors, gear, plot, rotor, spindle, thermal
+from . import (
+    _native,
+    bearing,
+    config,
+    diagnosis,
+    errors,
+    gear,
+    plot,
+    rotor,
+    spindle,
+    thermal,
+    validation,
+)
 from .bearing import Bearing, BearingSolution, Material
 from .config import load_config, seed_config, seed_config_names
 from .diagnosis import (
@@ -58,7 +71,8 @@ from .spindle import (
     spindle_grid,
     transient,
 )
-from .thermal import ThermalState, stiffness_curve, thermal_state
+from .thermal import ThermalState, lubrication_defaults, stiffness_curve, thermal_state
+from .validation import validate
 
 __version__: str = _native.__version__
 
@@ -68,7 +82,9 @@ def effects(kind: str | None = None) -> "polars.DataFrame":  # noqa: F821
     leave out, one row each (see :func:`thermobear.diagnosis.effect_registry`
     for the columns). ``kind="switch"``: the named effects for
     ``effects=[...]``; ``kind="term"``: the terms with a calibratable input
-    whose null value leaves them out (extra heat, housing conductance ...)."""
+    whose null value leaves them out (extra heat, housing conductance ...);
+    ``kind="model"``: alternative models chosen by an option
+    (``heat_model:skf``)."""
     return diagnosis.effect_registry(kind)
 
 
@@ -83,6 +99,7 @@ __all__ = [
     "rotor",
     "diagnosis",
     "plot",
+    "validation",
     # errors
     "ConfigError",
     "ConvergenceError",
@@ -98,6 +115,7 @@ __all__ = [
     "BearingSolution",
     "Material",
     "ThermalState",
+    "lubrication_defaults",
     "stiffness_curve",
     "thermal_state",
     # gear dynamics
@@ -133,4 +151,6 @@ __all__ = [
     "load_spindle_measurements",
     "seed_b_measurements",
     "spindle_candidates",
+    # validation against published data
+    "validate",
 ]

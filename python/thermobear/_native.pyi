@@ -187,11 +187,17 @@ class GearSystem:
         mesh_damping_ratio: float = 0.07,
         mesh_damping: str = "in-contact",
         bearing_damping_ratio: float = 0.02,
-        te_amplitude_um: float = 2.0,
+        te_amplitude_um: Optional[float] = None,
         torque_nm: Optional[float] = None,
         table_points: int = 64,
-        mesh_model: str = "potential-energy",
-    ) -> None: ...
+        mesh_model: Optional[str] = None,
+        mesh_stiffness_n_per_m: Optional[Sequence[float]] = None,
+        transmission_error_m: Optional[Sequence[float]] = None,
+    ) -> None:
+        """Support stiffness per shaft against speed; optional uniform mesh
+        tables over one mesh period (phases i / n): normal mesh stiffness
+        [N/m] instead of ``mesh_model``, TE [m] instead of
+        ``te_amplitude_um`` (default 2 um). Negative ``torque_nm``: coast."""
     @property
     def mesh_model(self) -> str: ...
     def params(self) -> dict[str, float]: ...
@@ -208,7 +214,9 @@ class GearSystem:
     def static_state_m(self, speed_rpm: float) -> list[float]: ...
     def mesh_period_s(self, speed_rpm: float) -> float: ...
     def check_steps(self, speed_rpm: float, steps_per_period: int) -> None: ...
-    def mesh_tables(self) -> dict[str, npt.NDArray[np.float64]]: ...
+    def mesh_tables(self) -> dict[str, npt.NDArray[np.float64]]:
+        """``mesh_phase``, ``normal_stiffness_n_per_m``,
+        ``transmission_error_um``, ``transmission_error_m``."""
 
 def bifurcation(
     system: GearSystem,
@@ -219,7 +227,16 @@ def bifurcation(
     steps_per_period: int = 64,
     lyapunov_periods: int = 100,
     progress: Optional[Callable[[int, int], None]] = None,
-) -> dict: ...
+    settings: Optional[dict[str, Any]] = None,
+) -> dict:
+    """Per-speed columns in sweep order plus the flat Poincare samples.
+    ``settings``: classifier settings by name (max_transient_periods,
+    max_period, period_rel_tol, converging_ratio, lyapunov_block_periods,
+    lyapunov_max_periods, lyapunov_sigmas,
+    lyapunov_threshold_per_mesh_period, zero_one_threshold,
+    jump_rel_amplitude, jump_trend_factor, jump_window_speeds); speeds
+    strictly ascending."""
+
 def bifurcation_many(
     systems: Sequence[GearSystem],
     directions: Sequence[str],
@@ -229,6 +246,7 @@ def bifurcation_many(
     steps_per_period: int = 64,
     lyapunov_periods: int = 100,
     progress: Optional[Callable[[int, int], None]] = None,
+    settings: Optional[dict[str, Any]] = None,
 ) -> list[dict]: ...
 def regime_map(
     system: GearSystem,
@@ -240,6 +258,7 @@ def regime_map(
     steps_per_period: int = 64,
     lyapunov_periods: int = 100,
     progress: Optional[Callable[[int, int], None]] = None,
+    settings: Optional[dict[str, Any]] = None,
 ) -> dict: ...
 def largest_lyapunov_reference(
     name: str,
@@ -254,7 +273,12 @@ def largest_lyapunov_gear(
     periods: int = 200,
     transient_periods: int = 300,
     steps_per_period: int = 64,
-) -> float: ...
+    block_periods: int = 10,
+) -> dict[str, float]:
+    """``lyapunov_per_s``, ``lyapunov_stderr_per_s``,
+    ``lyapunov_per_mesh_period``, ``lyapunov_stderr_per_mesh_period``,
+    ``blocks``, ``mesh_period_s``."""
+
 def gear_bearing_schedule(
     bearing: Bearing,
     case: str,
@@ -323,6 +347,7 @@ class Spindle:
         radial_load_n: float | None = None,
         effects: list[str] | None = None,
         spin_friction: float | None = None,
+        heat: dict[str, Any] | None = None,
     ) -> Spindle: ...
     @property
     def name(self) -> str: ...
@@ -371,7 +396,7 @@ def thermal_state(
     radial_n: float,
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
-    lubrication_factor_f0: float = 1.0,
+    lubrication_factor_f0: Optional[float] = None,
     spin_friction: float = 0.06,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
@@ -380,7 +405,13 @@ def thermal_state(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
-    churning_oil_fraction: float = 0.0,
+    churning_oil_fraction: Optional[float] = None,
+    heat_model: str = "palmgren",
+    lubrication: Optional[str] = None,
+    skf_series: Optional[str] = None,
+    sliding_friction_ehl: Optional[float] = None,
+    replenishment_krs: Optional[float] = None,
+    seal_moment_nmm: float = 0.0,
 ) -> dict[str, Any]: ...
 def thermal_stiffness_curve(
     bearing: Bearing,
@@ -389,7 +420,7 @@ def thermal_stiffness_curve(
     radial_n: float,
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
-    lubrication_factor_f0: float = 1.0,
+    lubrication_factor_f0: Optional[float] = None,
     spin_friction: float = 0.06,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
@@ -398,9 +429,17 @@ def thermal_stiffness_curve(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
-    churning_oil_fraction: float = 0.0,
+    churning_oil_fraction: Optional[float] = None,
+    heat_model: str = "palmgren",
+    lubrication: Optional[str] = None,
+    skf_series: Optional[str] = None,
+    sliding_friction_ehl: Optional[float] = None,
+    replenishment_krs: Optional[float] = None,
+    seal_moment_nmm: float = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
+def lubrication_defaults(lubrication: str, bearing_type: str) -> dict[str, Any]: ...
+def skf_sliding_friction_ehl(lubricant: str) -> float: ...
 def seed_a_network_links(
     bearing: Bearing,
     speed_rpm: float,

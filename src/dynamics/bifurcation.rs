@@ -121,6 +121,9 @@ pub struct SweepConfig {
     /// Periods per block of the Lyapunov estimate (the batch-means unit of
     /// its standard error) \[mesh periods\].
     pub lyapunov_block_periods: usize,
+    /// Neighbouring steps on each side whose median sets the local trend of
+    /// the jump test \[speeds\].
+    pub jump_window: usize,
 }
 
 impl Default for SweepConfig {
@@ -140,6 +143,7 @@ impl Default for SweepConfig {
             max_transient_periods: 1500,
             lyapunov_max_periods: 400,
             lyapunov_block_periods: 10,
+            jump_window: 5,
         }
     }
 }
@@ -352,7 +356,8 @@ fn finish(direction: SweepDirection, points: Vec<SpeedPoint>, cfg: &SweepConfig)
     let motions: Vec<Motion> = points.iter().map(|p| p.motion).collect();
     let lo: Vec<f64> = points.iter().map(|p| p.deflection_min).collect();
     let hi: Vec<f64> = points.iter().map(|p| p.deflection_max).collect();
-    let (jumps, transitions) = jumps_and_transitions(&motions, &lo, &hi, cfg.jump_rel, cfg.jump_trend_factor, 5);
+    let (jumps, transitions) =
+        jumps_and_transitions(&motions, &lo, &hi, cfg.jump_rel, cfg.jump_trend_factor, cfg.jump_window);
     let unsettled = (0..points.len()).filter(|&i| !points[i].settled).collect();
     SweepResult {
         direction,
@@ -708,6 +713,16 @@ pub struct RegimeCell {
     pub amplitude_m: f64,
     /// Mean of the relative deflection extremes (m).
     pub mean_deflection_m: f64,
+    /// Largest Lyapunov exponent per mesh period, when computed \[1/period\].
+    pub lyapunov_per_period: Option<f64>,
+    /// Its standard error (batch means) \[1/period\].
+    pub lyapunov_stderr_per_period: Option<f64>,
+    /// 0-1 test K, when computed \[-\].
+    pub zero_one_k: Option<f64>,
+    /// Transient actually run \[mesh periods\].
+    pub transient_periods: usize,
+    /// False when the section was still converging at the transient cap.
+    pub settled: bool,
 }
 
 /// Regime map over error scale x torque x speed (speed fastest), every cell
@@ -779,6 +794,11 @@ pub fn regime_map(
                             impact: p.impact,
                             amplitude_m: p.amplitude(),
                             mean_deflection_m: 0.5 * (p.deflection_max + p.deflection_min),
+                            lyapunov_per_period: p.lyapunov_per_period,
+                            lyapunov_stderr_per_period: p.lyapunov_stderr_per_period,
+                            zero_one_k: p.zero_one_k,
+                            transient_periods: p.transient_periods,
+                            settled: p.settled,
                         })
                     })
                     .collect()

@@ -25,4 +25,7 @@ pub use gear_model::{
     BacklashOscillator, BearingSupport, GearBody, HelicalPair, HelicalPairParams, HelicalPairSystem, MeshDamping,
 };
 pub use ode::{GridOde, OdeSystem, PeriodicTable};
-pub use seed::{bearing_schedule, helical_params, seed_a_params, seed_bearing_loads, BearingCase, GearSystemDefaults};
+pub use seed::{
+    bearing_schedule, helical_params, helical_params_from_tables, seed_a_params, seed_bearing_loads, BearingCase,
+    GearSystemDefaults, MeshTables,
+};

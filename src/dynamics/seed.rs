@@ -178,9 +178,57 @@ pub fn helical_params(
     d: &GearSystemDefaults,
 ) -> Result<HelicalPairParams> {
     d.check()?;
+    let kn = transverse_mesh.normal_direction(pair)?;
+    let tables = MeshTables {
+        normal_stiffness_n_per_m: kn.samples(d.table_points),
+        transmission_error_m: te.samples(d.table_points),
+    };
+    helical_params_from_tables(pair, tables, kr_n_per_m, ka_n_per_m, d)
+}
+
+/// Mesh stiffness and static transmission error over one mesh period,
+/// sampled at the uniform phases `i / len` (each table its own length, at
+/// least 2 samples); the model interpolates them periodically
+/// (Catmull-Rom, [`crate::dynamics::ode::PeriodicTable`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshTables {
+    /// Mesh stiffness along the normal deflection delta_n of A-45 \[N/m\].
+    pub normal_stiffness_n_per_m: Vec<f64>,
+    /// Static transmission error along delta_n \[m\].
+    pub transmission_error_m: Vec<f64>,
+}
+
+/// As [`helical_params`], with the mesh stiffness (normal direction) and
+/// the TE given as uniform tables over one mesh period. The input torque is
+/// `pair`'s; it may be overridden afterwards (negative for coast).
+pub fn helical_params_from_tables(
+    pair: &GearPair,
+    tables: MeshTables,
+    kr_n_per_m: f64,
+    ka_n_per_m: f64,
+    d: &GearSystemDefaults,
+) -> Result<HelicalPairParams> {
+    d.check()?;
     positive("kr_n_per_m", kr_n_per_m)?;
     positive("ka_n_per_m", ka_n_per_m)?;
-    let kn = transverse_mesh.normal_direction(pair)?;
+    for (field, t) in [
+        ("mesh_stiffness_n_per_m", &tables.normal_stiffness_n_per_m),
+        ("transmission_error_m", &tables.transmission_error_m),
+    ] {
+        if t.len() < 2 {
+            return Err(Error::config(
+                field,
+                t.len(),
+                "needs at least 2 samples per mesh period",
+            ));
+        }
+    }
+    for &k in &tables.normal_stiffness_n_per_m {
+        positive("mesh_stiffness_n_per_m", k)?;
+    }
+    for &e in &tables.transmission_error_m {
+        finite("transmission_error_m", e)?;
+    }
     let rb = pair.base_radius_m();
     let m = pair.mass_kg();
     let inertia = pair.polar_inertia_kg_m2();
@@ -200,8 +248,8 @@ pub fn helical_params(
         mesh_damping_ratio: d.mesh_damping_ratio,
         mesh_damping: d.mesh_damping,
         input_torque_n_m: pair.input_torque_n_m(),
-        mesh_stiffness_n_per_m: kn.samples(d.table_points),
-        transmission_error_m: te.samples(d.table_points),
+        mesh_stiffness_n_per_m: tables.normal_stiffness_n_per_m,
+        transmission_error_m: tables.transmission_error_m,
     })
 }
 
@@ -249,6 +297,30 @@ mod tests {
         let one = bearing_schedule(&b, BearingCase::Constant, &[], 2680.9, 1189.9, 1).unwrap();
         assert!((p.pinion.bearing.kx_n_per_m / one.at(0.0).0 - 2.0).abs() < 1e-12);
         assert!((p.gear.bearing.kz_n_per_m / one.at(0.0).1 - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn tables_path_equals_the_computed_path_and_names_bad_tables() {
+        let d = GearSystemDefaults::default();
+        let p = seed_a_params(&d).unwrap();
+        let pair = GearPair::preset("seed-electric-drive").unwrap();
+        let (kr, ka) = (p.pinion.bearing.kx_n_per_m, p.pinion.bearing.kz_n_per_m);
+        let tables = MeshTables {
+            normal_stiffness_n_per_m: p.mesh_stiffness_n_per_m.clone(),
+            transmission_error_m: p.transmission_error_m.clone(),
+        };
+        let q = helical_params_from_tables(&pair, tables.clone(), kr, ka, &d).unwrap();
+        assert_eq!(q, p);
+        let mut bad = tables.clone();
+        bad.normal_stiffness_n_per_m[5] = 0.0;
+        let e = helical_params_from_tables(&pair, bad, kr, ka, &d).unwrap_err();
+        assert!(e.to_string().contains("mesh_stiffness_n_per_m"), "{e}");
+        let short = MeshTables {
+            transmission_error_m: vec![0.0],
+            ..tables
+        };
+        let e = helical_params_from_tables(&pair, short, kr, ka, &d).unwrap_err();
+        assert!(e.to_string().contains("transmission_error_m"), "{e}");
     }
 
     #[test]

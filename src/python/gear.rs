@@ -19,10 +19,13 @@ use pyo3::types::{PyDict, PyList};
 use super::bearing::PyBearing;
 use super::errors::IntoPy;
 use crate::dynamics::lyapunov::{
-    largest_lyapunov_benettin, largest_lyapunov_variational, DuffingUeda, Lorenz, LyapunovConfig,
+    largest_lyapunov_benettin, largest_lyapunov_blocks, largest_lyapunov_variational, DuffingUeda, Lorenz,
+    LyapunovBlocks, LyapunovConfig,
 };
 use crate::dynamics::ode::Gridded;
-use crate::dynamics::seed::{bearing_schedule, helical_params, seed_bearing_loads, BearingCase, GearSystemDefaults};
+use crate::dynamics::seed::{
+    bearing_schedule, helical_params_from_tables, seed_bearing_loads, BearingCase, GearSystemDefaults, MeshTables,
+};
 use crate::dynamics::{
     regime_map as engine_regime_map, sweep, sweep_many, BearingSchedule, HelicalPair, HelicalSweep, ImpactRegime,
     MeshDamping, Motion, SweepConfig, SweepDirection, SweepResult,
@@ -343,8 +346,11 @@ pub struct PyGearSystem {
     pub defaults: GearSystemDefaults,
     pub schedule: Vec<(f64, f64, f64)>,
     pub mesh_model: String,
-    /// The gear pair spec the system was built from (pickling).
+    /// The gear pair spec the system was built from, with the signed
+    /// system torque (pickling).
     pub spec: GearPairSpec,
+    /// User mesh tables, if any (pickling).
+    pub tables: UserTables,
 }
 
 fn mesh_damping_mode(name: &str) -> Result<MeshDamping> {
@@ -374,9 +380,13 @@ fn support_schedule(speeds: &[f64], kr: &[f64], ka: &[f64]) -> Result<Vec<(f64, 
 impl PyGearSystem {
     /// `speeds_rpm`, `radial_stiffness_n_per_m`, `axial_stiffness_n_per_m`:
     /// the support stiffness of each gear body (all bearings of its shaft
-    /// together) against speed.
+    /// together) against speed. `mesh_stiffness_n_per_m` (normal direction)
+    /// and `transmission_error_m`: optional uniform tables over one mesh
+    /// period (phases i / len), replacing the computed mesh stiffness
+    /// (`mesh_model`) and the first-harmonic TE (`te_amplitude_um`). A
+    /// negative `torque_nm` is coast (the pinion driven backwards).
     #[new]
-    #[pyo3(signature = (gear, speeds_rpm, radial_stiffness_n_per_m, axial_stiffness_n_per_m, *, half_backlash_um=50.0, mesh_damping_ratio=0.07, mesh_damping="in-contact", bearing_damping_ratio=0.02, te_amplitude_um=2.0, torque_nm=None, table_points=64, mesh_model="potential-energy"))]
+    #[pyo3(signature = (gear, speeds_rpm, radial_stiffness_n_per_m, axial_stiffness_n_per_m, *, half_backlash_um=50.0, mesh_damping_ratio=0.07, mesh_damping="in-contact", bearing_damping_ratio=0.02, te_amplitude_um=None, torque_nm=None, table_points=64, mesh_model=None, mesh_stiffness_n_per_m=None, transmission_error_m=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
@@ -388,17 +398,35 @@ impl PyGearSystem {
         mesh_damping_ratio: f64,
         mesh_damping: &str,
         bearing_damping_ratio: f64,
-        te_amplitude_um: f64,
+        te_amplitude_um: Option<f64>,
         torque_nm: Option<f64>,
         table_points: usize,
-        mesh_model: &str,
+        mesh_model: Option<String>,
+        mesh_stiffness_n_per_m: Option<Vec<f64>>,
+        transmission_error_m: Option<Vec<f64>>,
     ) -> PyResult<Self> {
+        if let (Some(m), Some(_)) = (&mesh_model, &mesh_stiffness_n_per_m) {
+            return Err(Error::config(
+                "mesh_model",
+                m,
+                "give either mesh_model or a mesh_stiffness_n_per_m table, not both",
+            ))
+            .py_err();
+        }
+        if let (Some(a), Some(_)) = (te_amplitude_um, &transmission_error_m) {
+            return Err(Error::config(
+                "te_amplitude_um",
+                a,
+                "give either te_amplitude_um or a transmission_error table, not both",
+            ))
+            .py_err();
+        }
         let defaults = GearSystemDefaults {
             half_backlash_m: half_backlash_um * 1e-6,
             mesh_damping_ratio,
             mesh_damping: mesh_damping_mode(mesh_damping).py_err()?,
             bearing_damping_ratio,
-            te_amplitude_m: te_amplitude_um * 1e-6,
+            te_amplitude_m: te_amplitude_um.unwrap_or(2.0) * 1e-6,
             table_points,
         };
         let schedule = support_schedule(&speeds_rpm, &radial_stiffness_n_per_m, &axial_stiffness_n_per_m).py_err()?;
@@ -406,7 +434,15 @@ impl PyGearSystem {
         if let Some(t) = torque_nm {
             spec.input_torque_n_m = finite("torque_nm", t).py_err()?;
         }
-        Self::build(py, spec, defaults, schedule, mesh_model.to_string())
+        let mesh_model = match (&mesh_stiffness_n_per_m, mesh_model) {
+            (Some(_), _) => TABLE_MODEL.to_string(),
+            (None, m) => m.unwrap_or_else(|| "potential-energy".to_string()),
+        };
+        let tables = UserTables {
+            mesh_stiffness_n_per_m,
+            transmission_error_m,
+        };
+        Self::build(py, spec, defaults, schedule, mesh_model, tables)
     }
 
     /// Pickle support: the versioned serde envelope (see `_restore`).
@@ -504,7 +540,8 @@ impl PyGearSystem {
         Ok(())
     }
 
-    /// Mesh stiffness and TE tables the model uses, over one mesh period.
+    /// Mesh stiffness (normal) and TE tables the model uses, over one mesh
+    /// period: phases i / n, N/m, um and m.
     fn mesh_tables<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let p = self.sweep.pair.params();
         let n = p.mesh_stiffness_n_per_m.len();
@@ -523,12 +560,26 @@ impl PyGearSystem {
                 .collect::<Vec<_>>()
                 .into_pyarray(py),
         )?;
+        d.set_item("transmission_error_m", p.transmission_error_m.clone().into_pyarray(py))?;
         Ok(d)
     }
 }
 
 fn mesh_model_of(pair: &GearPair, model: &str) -> Result<MeshStiffness> {
     mesh_model(pair, model)
+}
+
+/// `mesh_model` of a system built from a user mesh-stiffness table.
+const TABLE_MODEL: &str = "table";
+
+/// Mesh stiffness (normal direction, N/m) and TE (m) tables given by the
+/// user: uniform samples over one mesh period, used as they are.
+#[derive(Debug, Clone, Default)]
+pub struct UserTables {
+    /// Mesh stiffness samples along the normal deflection \[N/m\].
+    pub mesh_stiffness_n_per_m: Option<Vec<f64>>,
+    /// Static transmission error samples \[m\].
+    pub transmission_error_m: Option<Vec<f64>>,
 }
 
 impl PyGearSystem {
@@ -548,6 +599,8 @@ impl PyGearSystem {
             table_points: d.table_points,
             schedule: self.schedule.clone(),
             mesh_model: self.mesh_model.clone(),
+            mesh_stiffness_n_per_m: self.tables.mesh_stiffness_n_per_m.clone(),
+            transmission_error_m: self.tables.transmission_error_m.clone(),
         };
         super::persist::reduce(py, "GearSystem", &state)
     }
@@ -562,38 +615,71 @@ impl PyGearSystem {
             te_amplitude_m: s.te_amplitude_m,
             table_points: s.table_points,
         };
-        Self::build(py, s.spec, defaults, s.schedule, s.mesh_model)
+        let tables = UserTables {
+            mesh_stiffness_n_per_m: s.mesh_stiffness_n_per_m,
+            transmission_error_m: s.transmission_error_m,
+        };
+        Self::build(py, s.spec, defaults, s.schedule, s.mesh_model, tables)
     }
 
     /// The system from SI inputs: the one build path of `new` and `restore`
-    /// (mesh stiffness tabulated with the GIL released; the helical pair at
-    /// the first schedule speed's support stiffness).
+    /// (mesh stiffness tabulated with the GIL released unless given; the
+    /// helical pair at the first schedule speed's support stiffness).
+    ///
+    /// Coast (negative torque): the gear pair's geometry and mesh stiffness
+    /// do not depend on the torque's sign, so the pair is built with |T| and
+    /// the model gets the signed torque; the static state then sits on the
+    /// back flank (docs/concepts/physics.md §7: the dead zone is odd, so
+    /// `(q, T, e) -> (-q, -T, -e)` maps solutions onto solutions).
     fn build(
         py: Python<'_>,
         spec: GearPairSpec,
-        defaults: GearSystemDefaults,
+        mut defaults: GearSystemDefaults,
         schedule: Vec<(f64, f64, f64)>,
         mesh_model: String,
+        tables: UserTables,
     ) -> PyResult<Self> {
         defaults.check().py_err()?;
         let bearings = BearingSchedule::new(schedule.clone()).py_err()?;
-        let pair = GearPair::new(spec).py_err()?;
-        let mesh = {
-            let (p, m) = (pair.clone(), mesh_model.clone());
-            py.detach(move || mesh_model_of(&p, &m)).py_err()?
+        let torque = finite("torque_nm", spec.input_torque_n_m).py_err()?;
+        let mut drive_spec = spec.clone();
+        drive_spec.input_torque_n_m = torque.abs();
+        let pair = GearPair::new(drive_spec).py_err()?;
+        let kn = match &tables.mesh_stiffness_n_per_m {
+            Some(k) => k.clone(),
+            None => {
+                let (p, m) = (pair.clone(), mesh_model.clone());
+                let mesh = py.detach(move || mesh_model_of(&p, &m)).py_err()?;
+                mesh.normal_direction(&pair).py_err()?.samples(defaults.table_points)
+            }
         };
-        let te = TransmissionError::harmonics(vec![(defaults.te_amplitude_m, 0.0)]).py_err()?;
+        let te = match &tables.transmission_error_m {
+            Some(e) => {
+                let (lo, hi) = e.iter().fold((f64::MAX, f64::MIN), |(l, h), &v| (l.min(v), h.max(v)));
+                defaults.te_amplitude_m = if e.is_empty() { 0.0 } else { 0.5 * (hi - lo) };
+                e.clone()
+            }
+            None => TransmissionError::harmonics(vec![(defaults.te_amplitude_m, 0.0)])
+                .py_err()?
+                .samples(defaults.table_points),
+        };
+        let mesh_tables = MeshTables {
+            normal_stiffness_n_per_m: kn,
+            transmission_error_m: te,
+        };
         let (kr, ka) = bearings.at(schedule[0].0);
-        let params = helical_params(&pair, &mesh, &te, kr, ka, &defaults).py_err()?;
+        let mut params = helical_params_from_tables(&pair, mesh_tables, kr, ka, &defaults).py_err()?;
+        params.input_torque_n_m = torque;
         Ok(PyGearSystem {
             sweep: HelicalSweep {
                 pair: HelicalPair::new(params).py_err()?,
                 bearings,
             },
             defaults,
-            spec: pair.spec.clone(),
+            spec,
             schedule,
             mesh_model,
+            tables,
         })
     }
 }
@@ -621,19 +707,129 @@ fn direction_of(name: &str) -> Result<SweepDirection> {
     }
 }
 
+/// Names of the classifier/sweep settings accepted in `settings`.
+pub const SETTING_NAMES: [&str; 12] = [
+    "max_transient_periods",
+    "max_period",
+    "period_rel_tol",
+    "converging_ratio",
+    "lyapunov_block_periods",
+    "lyapunov_max_periods",
+    "lyapunov_sigmas",
+    "lyapunov_threshold_per_mesh_period",
+    "zero_one_threshold",
+    "jump_rel_amplitude",
+    "jump_trend_factor",
+    "jump_window_speeds",
+];
+
+fn count_setting(name: &str, v: &Bound<'_, PyAny>, min: usize) -> PyResult<usize> {
+    let n: i64 = v
+        .extract()
+        .map_err(|_| Error::config(name, v.to_string(), "must be a whole number"))
+        .py_err()?;
+    if n < min as i64 {
+        return Err(Error::config(name, n, format!("must be at least {min}"))).py_err();
+    }
+    Ok(n as usize)
+}
+
+fn real_setting(name: &str, v: &Bound<'_, PyAny>) -> PyResult<f64> {
+    let x: f64 = v
+        .extract()
+        .map_err(|_| Error::config(name, v.to_string(), "must be a number"))
+        .py_err()?;
+    finite(name, x).py_err()
+}
+
+fn open_unit(name: &str, x: f64) -> Result<f64> {
+    if x > 0.0 && x < 1.0 {
+        Ok(x)
+    } else {
+        Err(Error::config(name, x, "must lie strictly between 0 and 1"))
+    }
+}
+
+/// Sweep settings: the four counts plus the optional `settings` (names of
+/// the Python API, [`SETTING_NAMES`]; errors name the setting and value).
+/// Without `max_transient_periods` the adaptive transient may grow to
+/// `max(1500, 5 x transient_periods)`; without `lyapunov_max_periods` the
+/// Lyapunov estimate to `max(400, 4 x lyapunov_periods)`.
 fn sweep_config(
     transient_periods: usize,
     record_periods: usize,
     steps_per_period: usize,
     lyapunov_periods: usize,
-) -> Result<SweepConfig> {
-    Ok(SweepConfig {
+    settings: Option<&Bound<'_, PyDict>>,
+) -> PyResult<SweepConfig> {
+    if record_periods < 2 {
+        return Err(Error::config("record_periods", record_periods, "must be at least 2")).py_err();
+    }
+    let mut cfg = SweepConfig {
         transient_periods,
         recorded_periods: record_periods,
         steps_per_period,
         lyapunov_periods,
+        max_transient_periods: 1500.max(5 * transient_periods),
+        lyapunov_max_periods: 400.max(4 * lyapunov_periods),
         ..SweepConfig::default()
-    })
+    };
+    let Some(settings) = settings else {
+        return Ok(cfg);
+    };
+    for (k, v) in settings.iter() {
+        let key: String = k.extract()?;
+        if v.is_none() {
+            continue;
+        }
+        let name = key.as_str();
+        match name {
+            "max_transient_periods" => {
+                cfg.max_transient_periods = count_setting(name, &v, transient_periods)?;
+            }
+            "max_period" => {
+                let n = count_setting(name, &v, 1)?;
+                if 2 * n > record_periods {
+                    return Err(Error::config(
+                        name,
+                        n,
+                        format!(
+                            "a period n needs 2 n recorded periods; record_periods = {record_periods} \
+                             allows at most {}",
+                            record_periods / 2
+                        ),
+                    ))
+                    .py_err();
+                }
+                cfg.classify.max_period = n;
+            }
+            "period_rel_tol" => cfg.classify.rel_tol = open_unit(name, real_setting(name, &v)?).py_err()?,
+            "converging_ratio" => cfg.classify.converging_ratio = open_unit(name, real_setting(name, &v)?).py_err()?,
+            "lyapunov_block_periods" => cfg.lyapunov_block_periods = count_setting(name, &v, 1)?,
+            "lyapunov_max_periods" => cfg.lyapunov_max_periods = count_setting(name, &v, lyapunov_periods)?,
+            "lyapunov_sigmas" => {
+                cfg.classify.lyapunov_sigmas = crate::error::non_negative(name, real_setting(name, &v)?).py_err()?;
+            }
+            "lyapunov_threshold_per_mesh_period" => {
+                cfg.classify.lyapunov_threshold_per_period = real_setting(name, &v)?;
+            }
+            "zero_one_threshold" => {
+                cfg.classify.zero_one_threshold = open_unit(name, real_setting(name, &v)?).py_err()?;
+            }
+            "jump_rel_amplitude" => cfg.jump_rel = positive(name, real_setting(name, &v)?).py_err()?,
+            "jump_trend_factor" => cfg.jump_trend_factor = positive(name, real_setting(name, &v)?).py_err()?,
+            "jump_window_speeds" => cfg.jump_window = count_setting(name, &v, 1)?,
+            other => {
+                return Err(Error::config(
+                    "settings",
+                    other,
+                    format!("unknown setting; known: {}", SETTING_NAMES.join(", ")),
+                ))
+                .py_err();
+            }
+        }
+    }
+    Ok(cfg)
 }
 
 /// Motion label: "period-n", "quasi-periodic", "chaotic"; and the period (0 if none).
@@ -654,11 +850,37 @@ fn impact_label(i: ImpactRegime) -> &'static str {
     }
 }
 
-fn sweep_dict<'py>(py: Python<'py>, r: &SweepResult) -> PyResult<Bound<'py, PyDict>> {
+/// Kind of a regime-family transition, seen in sweep order.
+fn transition_kind(from: Motion, to: Motion) -> &'static str {
+    match (from, to) {
+        (_, Motion::Chaotic) => "enters-chaos",
+        (Motion::Chaotic, _) => "exits-chaos",
+        (_, Motion::QuasiPeriodic) => "enters-quasi-periodic",
+        _ => "exits-quasi-periodic",
+    }
+}
+
+/// Mesh period `60 / (z_p n)` \[s\].
+fn mesh_period(pinion_teeth: u32, speed_rpm: f64) -> f64 {
+    60.0 / (pinion_teeth as f64 * speed_rpm)
+}
+
+/// Per-speed columns in sweep order (ascending speed for "up" and
+/// "independent", descending for "down"); `jump_after`/`transition_*`
+/// refer to the step from a row's speed to the next row's speed.
+fn sweep_dict<'py>(py: Python<'py>, r: &SweepResult, pinion_teeth: u32) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    let pts = &r.points;
+    let n = r.points.len();
+    let down = r.direction == SweepDirection::Down;
+    let order: Vec<usize> = if down { (0..n).rev().collect() } else { (0..n).collect() };
+    let pts: Vec<&crate::dynamics::SpeedPoint> = order.iter().map(|&i| &r.points[i]).collect();
+    // Row after which the ascending step (i, i + 1) lies in sweep order.
+    let row_of = |i: usize| if down { n - 2 - i } else { i };
     let um = 1e6;
-    let col = |f: &dyn Fn(&crate::dynamics::SpeedPoint) -> f64| -> Vec<f64> { pts.iter().map(f).collect() };
+    let col = |f: &dyn Fn(&crate::dynamics::SpeedPoint) -> f64| -> Vec<f64> { pts.iter().map(|p| f(p)).collect() };
+    let opt = |f: &dyn Fn(&crate::dynamics::SpeedPoint) -> Option<f64>| -> Vec<Option<f64>> {
+        pts.iter().map(|p| f(p)).collect()
+    };
     d.set_item("speed_rpm", col(&|p| p.speed).into_pyarray(py))?;
     let labels: Vec<(String, usize)> = pts.iter().map(|p| motion_label(p.motion)).collect();
     d.set_item("regime", labels.iter().map(|l| l.0.clone()).collect::<Vec<_>>())?;
@@ -667,19 +889,52 @@ fn sweep_dict<'py>(py: Python<'py>, r: &SweepResult) -> PyResult<Bound<'py, PyDi
         labels.iter().map(|l| l.1 as i64).collect::<Vec<_>>().into_pyarray(py),
     )?;
     d.set_item("impact", pts.iter().map(|p| impact_label(p.impact)).collect::<Vec<_>>())?;
+    d.set_item("lyapunov_per_mesh_period", opt(&|p| p.lyapunov_per_period))?;
     d.set_item(
-        "lyapunov_per_period",
-        pts.iter().map(|p| p.lyapunov_per_period).collect::<Vec<_>>(),
+        "lyapunov_stderr_per_mesh_period",
+        opt(&|p| p.lyapunov_stderr_per_period),
     )?;
+    let per_s = |v: Option<f64>, speed: f64| v.map(|l| l / mesh_period(pinion_teeth, speed));
+    d.set_item("lyapunov_per_s", opt(&|p| per_s(p.lyapunov_per_period, p.speed)))?;
+    d.set_item(
+        "lyapunov_stderr_per_s",
+        opt(&|p| per_s(p.lyapunov_stderr_per_period, p.speed)),
+    )?;
+    d.set_item("zero_one_k", opt(&|p| p.zero_one_k))?;
+    d.set_item(
+        "transient_periods",
+        pts.iter()
+            .map(|p| p.transient_periods as i64)
+            .collect::<Vec<_>>()
+            .into_pyarray(py),
+    )?;
+    d.set_item("settled", pts.iter().map(|p| p.settled).collect::<Vec<_>>())?;
     d.set_item("dte_min_um", col(&|p| p.deflection_min * um).into_pyarray(py))?;
     d.set_item("dte_max_um", col(&|p| p.deflection_max * um).into_pyarray(py))?;
-    let mut jump = vec![false; pts.len()];
+    let mut jump = vec![false; n];
     for &j in &r.jumps {
-        if j < jump.len() {
-            jump[j] = true;
+        if j + 1 < n {
+            jump[row_of(j)] = true;
         }
     }
     d.set_item("jump_after", jump)?;
+    let mut kind: Vec<Option<&'static str>> = vec![None; n];
+    let mut dmin: Vec<Option<f64>> = vec![None; n];
+    let mut dmax: Vec<Option<f64>> = vec![None; n];
+    for t in r.transitions.iter().filter(|t| t.index + 1 < n) {
+        let row = row_of(t.index);
+        let (from, to, s) = if down {
+            (t.to, t.from, -1.0)
+        } else {
+            (t.from, t.to, 1.0)
+        };
+        kind[row] = Some(transition_kind(from, to));
+        dmin[row] = Some(s * t.min_change * um);
+        dmax[row] = Some(s * t.max_change * um);
+    }
+    d.set_item("transition_after", kind)?;
+    d.set_item("transition_dte_min_change_um", dmin)?;
+    d.set_item("transition_dte_max_change_um", dmax)?;
     d.set_item(
         "poincare_count",
         pts.iter()
@@ -700,7 +955,7 @@ fn sweep_dict<'py>(py: Python<'py>, r: &SweepResult) -> PyResult<Bound<'py, PyDi
 /// One speed sweep of a gear system: per-speed columns plus the flat
 /// Poincare samples (`poincare_count` per speed).
 #[pyfunction]
-#[pyo3(signature = (system, speeds_rpm, direction="up", transient_periods=300, record_periods=100, steps_per_period=64, lyapunov_periods=100, progress=None))]
+#[pyo3(signature = (system, speeds_rpm, direction="up", transient_periods=300, record_periods=100, steps_per_period=64, lyapunov_periods=100, progress=None, settings=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn bifurcation<'py>(
     py: Python<'py>,
@@ -712,19 +967,26 @@ pub fn bifurcation<'py>(
     steps_per_period: usize,
     lyapunov_periods: usize,
     progress: Option<Bound<'py, PyAny>>,
+    settings: Option<Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let speeds = speeds_rpm.as_slice()?.to_vec();
     let dir = direction_of(direction).py_err()?;
-    let cfg = sweep_config(transient_periods, record_periods, steps_per_period, lyapunov_periods).py_err()?;
+    let cfg = sweep_config(
+        transient_periods,
+        record_periods,
+        steps_per_period,
+        lyapunov_periods,
+        settings.as_ref(),
+    )?;
     let model = &system.sweep;
     let r = run_watched(py, progress.as_ref(), |hook| sweep(model, &speeds, dir, &cfg, hook))?;
-    sweep_dict(py, &r)
+    sweep_dict(py, &r, model.pair.params().pinion_teeth)
 }
 
 /// Several sweeps over the same speeds in parallel (lock-step batches);
 /// one dict per (system, direction) job, in order.
 #[pyfunction]
-#[pyo3(signature = (systems, directions, speeds_rpm, transient_periods=300, record_periods=100, steps_per_period=64, lyapunov_periods=100, progress=None))]
+#[pyo3(signature = (systems, directions, speeds_rpm, transient_periods=300, record_periods=100, steps_per_period=64, lyapunov_periods=100, progress=None, settings=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn bifurcation_many<'py>(
     py: Python<'py>,
@@ -736,6 +998,7 @@ pub fn bifurcation_many<'py>(
     steps_per_period: usize,
     lyapunov_periods: usize,
     progress: Option<Bound<'py, PyAny>>,
+    settings: Option<Bound<'py, PyDict>>,
 ) -> PyResult<Vec<Bound<'py, PyDict>>> {
     if systems.len() != directions.len() || systems.is_empty() {
         return Err(Error::config(
@@ -746,7 +1009,13 @@ pub fn bifurcation_many<'py>(
         .py_err();
     }
     let speeds = speeds_rpm.as_slice()?.to_vec();
-    let cfg = sweep_config(transient_periods, record_periods, steps_per_period, lyapunov_periods).py_err()?;
+    let cfg = sweep_config(
+        transient_periods,
+        record_periods,
+        steps_per_period,
+        lyapunov_periods,
+        settings.as_ref(),
+    )?;
     let jobs: Vec<(&HelicalSweep, SweepDirection)> = systems
         .iter()
         .zip(&directions)
@@ -754,13 +1023,16 @@ pub fn bifurcation_many<'py>(
         .collect::<Result<_>>()
         .py_err()?;
     let rs = run_watched(py, progress.as_ref(), |hook| sweep_many(&jobs, &speeds, &cfg, hook))?;
-    rs.iter().map(|r| sweep_dict(py, r)).collect()
+    rs.iter()
+        .zip(&systems)
+        .map(|(r, s)| sweep_dict(py, r, s.sweep.pair.params().pinion_teeth))
+        .collect()
 }
 
 /// Regime map over TE scale x torque x speed (speed fastest), every cell from
 /// its static state.
 #[pyfunction]
-#[pyo3(signature = (system, torques_nm, te_scales, speeds_rpm, transient_periods=300, record_periods=100, steps_per_period=64, lyapunov_periods=100, progress=None))]
+#[pyo3(signature = (system, torques_nm, te_scales, speeds_rpm, transient_periods=300, record_periods=100, steps_per_period=64, lyapunov_periods=100, progress=None, settings=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn regime_map<'py>(
     py: Python<'py>,
@@ -773,6 +1045,7 @@ pub fn regime_map<'py>(
     steps_per_period: usize,
     lyapunov_periods: usize,
     progress: Option<Bound<'py, PyAny>>,
+    settings: Option<Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let speeds = speeds_rpm.as_slice()?.to_vec();
     for &t in &torques_nm {
@@ -782,7 +1055,13 @@ pub fn regime_map<'py>(
         finite("te_scales", e).py_err()?;
         crate::error::non_negative("te_scales", e).py_err()?;
     }
-    let cfg = sweep_config(transient_periods, record_periods, steps_per_period, lyapunov_periods).py_err()?;
+    let cfg = sweep_config(
+        transient_periods,
+        record_periods,
+        steps_per_period,
+        lyapunov_periods,
+        settings.as_ref(),
+    )?;
     let model = &system.sweep;
     let cells = run_watched(py, progress.as_ref(), |hook| {
         engine_regime_map(model, &torques_nm, &te_scales, &speeds, &cfg, hook)
@@ -804,6 +1083,32 @@ pub fn regime_map<'py>(
     )?;
     d.set_item("amplitude_um", col(&|c| c.amplitude_m * 1e6).into_pyarray(py))?;
     d.set_item("mean_dte_um", col(&|c| c.mean_deflection_m * 1e6).into_pyarray(py))?;
+    let z = model.pair.params().pinion_teeth;
+    let opt =
+        |f: &dyn Fn(&crate::dynamics::RegimeCell) -> Option<f64>| -> Vec<Option<f64>> { cells.iter().map(f).collect() };
+    d.set_item("lyapunov_per_mesh_period", opt(&|c| c.lyapunov_per_period))?;
+    d.set_item(
+        "lyapunov_stderr_per_mesh_period",
+        opt(&|c| c.lyapunov_stderr_per_period),
+    )?;
+    d.set_item(
+        "lyapunov_per_s",
+        opt(&|c| c.lyapunov_per_period.map(|l| l / mesh_period(z, c.speed_rpm))),
+    )?;
+    d.set_item(
+        "lyapunov_stderr_per_s",
+        opt(&|c| c.lyapunov_stderr_per_period.map(|l| l / mesh_period(z, c.speed_rpm))),
+    )?;
+    d.set_item("zero_one_k", opt(&|c| c.zero_one_k))?;
+    d.set_item(
+        "transient_periods",
+        cells
+            .iter()
+            .map(|c| c.transient_periods as i64)
+            .collect::<Vec<_>>()
+            .into_pyarray(py),
+    )?;
+    d.set_item("settled", cells.iter().map(|c| c.settled).collect::<Vec<_>>())?;
     Ok(d)
 }
 
@@ -869,11 +1174,14 @@ pub fn largest_lyapunov_reference(
     .py_err()
 }
 
-/// Largest Lyapunov exponent of the gear system at one speed [1/s], by
-/// Benettin renormalisation once per mesh period after a transient from the
-/// static state.
+/// Largest Lyapunov exponent of the gear system at one speed, by Benettin
+/// renormalisation once per mesh period after a transient from the static
+/// state, measured in blocks of `block_periods` periods (`periods` rounded
+/// down to whole blocks, at least 2): a dict with the exponent and its
+/// batch-means standard error per second and per mesh period, the blocks
+/// and the mesh period \[s\].
 #[pyfunction]
-#[pyo3(signature = (system, speed_rpm, periods=200, transient_periods=300, steps_per_period=64))]
+#[pyo3(signature = (system, speed_rpm, periods=200, transient_periods=300, steps_per_period=64, block_periods=10))]
 pub fn largest_lyapunov_gear(
     py: Python<'_>,
     system: &PyGearSystem,
@@ -881,27 +1189,55 @@ pub fn largest_lyapunov_gear(
     periods: usize,
     transient_periods: usize,
     steps_per_period: usize,
-) -> PyResult<f64> {
+    block_periods: usize,
+) -> PyResult<BTreeMap<&'static str, f64>> {
+    if block_periods == 0 {
+        return Err(Error::config("block_periods", 0, "must be at least 1")).py_err();
+    }
+    if periods < 2 * block_periods {
+        return Err(Error::config(
+            "periods",
+            periods,
+            format!("at least 2 blocks of block_periods = {block_periods} are needed"),
+        ))
+        .py_err();
+    }
     let pair = system.pair_at(speed_rpm)?;
-    py.detach(move || -> Result<f64> {
-        let sys = pair.system(speed_rpm, steps_per_period)?;
-        let x0 = pair.static_state()?;
-        // Scales: backlash for displacements, backlash x mesh frequency for velocities.
-        let b = pair.params().half_backlash_m;
-        let v = b / sys.period_s();
-        let mut scale = [b; 14];
-        for s in scale.iter_mut().skip(7) {
-            *s = v;
-        }
-        let cfg = LyapunovConfig {
-            transient_steps: transient_periods * steps_per_period,
-            measure_steps: periods.max(1) * steps_per_period,
-            renorm_steps: steps_per_period,
-            separation: 1e-6,
-        };
-        Ok(largest_lyapunov_benettin(&sys, &x0, 0, &scale, &cfg)?.0)
-    })
-    .py_err()
+    let est = py
+        .detach(move || -> Result<(f64, f64, usize, f64)> {
+            let sys = pair.system(speed_rpm, steps_per_period)?;
+            let mut x0 = pair.static_state()?;
+            crate::dynamics::integrate::rk4_advance(&sys, &mut x0, 0, transient_periods * steps_per_period);
+            // Scales: backlash for displacements, backlash x mesh frequency for velocities.
+            let b = pair.params().half_backlash_m;
+            let v = b / sys.period_s();
+            let mut scale = [b; 14];
+            for s in scale.iter_mut().skip(7) {
+                *s = v;
+            }
+            let blocks = periods / block_periods;
+            let cfg = LyapunovBlocks {
+                renorm_steps: steps_per_period,
+                renorms_per_block: block_periods,
+                min_blocks: blocks,
+                max_blocks: blocks,
+                separation: 1e-6,
+                sigmas: 0.0,
+                threshold: 0.0,
+            };
+            let e = largest_lyapunov_blocks(&sys, &x0, 0, &scale, &cfg, |_| {})?;
+            Ok((e.exponent, e.standard_error, e.blocks, sys.period_s()))
+        })
+        .py_err()?;
+    let t = mesh_period(system.sweep.pair.params().pinion_teeth, speed_rpm);
+    let mut d = BTreeMap::new();
+    d.insert("lyapunov_per_s", est.0);
+    d.insert("lyapunov_stderr_per_s", est.1);
+    d.insert("lyapunov_per_mesh_period", est.0 * t);
+    d.insert("lyapunov_stderr_per_mesh_period", est.1 * t);
+    d.insert("blocks", est.2 as f64);
+    d.insert("mesh_period_s", t);
+    Ok(d)
 }
 
 // ------------------------------------------------------------- bearings ----

@@ -58,8 +58,14 @@ pub struct GearSystemState {
     pub table_points: usize,
     /// (speed_rpm, kr, ka) support schedule.
     pub schedule: Vec<(f64, f64, f64)>,
-    /// "potential-energy" or "iso".
+    /// "potential-energy", "iso" or "table".
     pub mesh_model: String,
+    /// User mesh stiffness table (normal direction) \[N/m\], if given.
+    #[serde(default)]
+    pub mesh_stiffness_n_per_m: Option<Vec<f64>>,
+    /// User transmission error table \[m\], if given.
+    #[serde(default)]
+    pub transmission_error_m: Option<Vec<f64>>,
 }
 
 fn to_dict<'py>(py: Python<'py>, env: &Envelope) -> PyResult<Bound<'py, PyDict>> {

@@ -83,6 +83,8 @@ fn state_dict<'py>(py: Python<'py>, sp: &Spindle, s: &SpindleState) -> PyResult<
         .map(|h| h.heat.inner_spin_w + h.heat.outer_spin_w)
         .collect();
     d.set_item("spin_heat_w", spin)?;
+    let drag: Vec<f64> = s.bearing_heat.iter().map(|h| h.drag_w).collect();
+    d.set_item("drag_heat_w", drag)?;
     d.set_item("motor_losses_w", s.motor_losses_w)?;
     d.set_item("magnetic_pull_n", sp.magnetic_pull_n())?;
     d.set_item("total_heat_w", s.total_heat_w)?;
@@ -149,7 +151,7 @@ impl PySpindle {
     }
 
     /// A copy with other settings (None keeps the current value).
-    #[pyo3(signature = (preload_n=None, preload_kind=None, spring_rate_n_per_um=None, radial_load_n=None, effects=None, spin_friction=None))]
+    #[pyo3(signature = (preload_n=None, preload_kind=None, spring_rate_n_per_um=None, radial_load_n=None, effects=None, spin_friction=None, heat=None))]
     #[allow(clippy::too_many_arguments)]
     fn with_options(
         &self,
@@ -160,6 +162,7 @@ impl PySpindle {
         radial_load_n: Option<f64>,
         effects: Option<Vec<String>>,
         spin_friction: Option<f64>,
+        heat: Option<SpindleHeatArgs>,
     ) -> PyResult<Self> {
         let c = &self.inner.config;
         let (kind0, rate0) = match c.preload {
@@ -179,6 +182,9 @@ impl PySpindle {
         }
         if let Some(mu) = spin_friction {
             cfg.spin_friction = non_negative("spin_friction", mu).py_err()?;
+        }
+        if let Some(h) = heat {
+            h.apply(&mut cfg).py_err()?;
         }
         let inner = py.detach(|| Spindle::new(cfg)).py_err()?;
         Ok(PySpindle {
@@ -257,6 +263,9 @@ impl PySpindle {
         d.set_item("lubricant", p.lubricant.name.clone())?;
         d.set_item("lubrication_factor_f0", p.lubrication_factor_f0)?;
         d.set_item("spin_friction", c.spin_friction)?;
+        d.set_item("heat_model", c.heat_model.name())?;
+        d.set_item("lubrication", c.lubrication.name())?;
+        d.set_item("churning_oil_fraction", c.churning_oil_fraction)?;
         d.set_item(
             "motor_losses_at_reference_w",
             p.stator_copper_w + p.stator_iron_w + p.rotor_copper_w + p.rotor_mechanical_w,
@@ -424,4 +433,64 @@ impl PySpindle {
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PySpindle>()?;
     Ok(())
+}
+
+/// Heat-model settings of a spindle (docs/concepts/physics.md §9), from a
+/// Python dict: `heat_model` ("palmgren" | "skf"), `lubrication` (method;
+/// its defaults fill `lubrication_factor_f0` and `churning_oil_fraction`
+/// when not given), `skf_series`, `sliding_friction_ehl`,
+/// `replenishment_krs`, `seal_moment_nmm`.
+#[derive(FromPyObject)]
+#[pyo3(from_item_all)]
+pub struct SpindleHeatArgs {
+    heat_model: Option<String>,
+    lubrication: Option<String>,
+    lubrication_factor_f0: Option<f64>,
+    churning_oil_fraction: Option<f64>,
+    skf_series: Option<String>,
+    sliding_friction_ehl: Option<f64>,
+    replenishment_krs: Option<f64>,
+    seal_moment_nmm: Option<f64>,
+}
+
+impl SpindleHeatArgs {
+    /// Set the heat model of `cfg`; values not given keep the current ones
+    /// (with a lubrication method given: its f0 and X defaults).
+    fn apply(self, cfg: &mut SpindleConfig) -> crate::error::Result<()> {
+        use crate::thermal::friction::{resolve_lubrication, HeatModel, SkfSeries};
+        if let Some(m) = &self.heat_model {
+            cfg.heat_model = HeatModel::from_name(m)?;
+        }
+        let bt = cfg.params.front_bearing.geometry.bearing_type;
+        if self.lubrication.is_some() {
+            let (l, f0, x) = resolve_lubrication(
+                self.lubrication.as_deref(),
+                bt,
+                self.lubrication_factor_f0,
+                self.churning_oil_fraction,
+            )?;
+            cfg.lubrication = l;
+            cfg.params.lubrication_factor_f0 = f0;
+            cfg.churning_oil_fraction = x;
+        } else {
+            let f0 = self.lubrication_factor_f0.unwrap_or(cfg.params.lubrication_factor_f0);
+            let x = self.churning_oil_fraction.unwrap_or(cfg.churning_oil_fraction);
+            let (_, f0, x) = resolve_lubrication(None, bt, Some(f0), Some(x))?;
+            cfg.params.lubrication_factor_f0 = f0;
+            cfg.churning_oil_fraction = x;
+        }
+        if let Some(s) = &self.skf_series {
+            cfg.skf.series = Some(SkfSeries::from_name(s)?);
+        }
+        if self.sliding_friction_ehl.is_some() {
+            cfg.skf.mu_ehl = self.sliding_friction_ehl;
+        }
+        if self.replenishment_krs.is_some() {
+            cfg.skf.replenishment_krs = self.replenishment_krs;
+        }
+        if let Some(m) = self.seal_moment_nmm {
+            cfg.skf.seal_moment_n_m = m * 1e-3;
+        }
+        cfg.skf.validate()
+    }
 }

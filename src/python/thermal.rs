@@ -10,9 +10,11 @@ use super::bearing::{PyBearing, PyMaterial};
 use super::errors::IntoPy;
 use super::parallel::{chunked_map, default_chunk};
 use super::solve::{curve_columns, solve_options, state_dict, tilt_option};
+use crate::bearing::BearingType;
 use crate::bearing::{Bearing, BearingState};
 use crate::error::{finite, Result};
 use crate::thermal::coupled::{seed_a_mounting, CoupledBearing, CoupledOptions, ThermalState};
+use crate::thermal::friction::{resolve_lubrication, HeatModel, Lubrication, SkfSeries, SkfSettings};
 use crate::thermal::presets::SeedAParams;
 use crate::thermal::Lubricant;
 
@@ -20,7 +22,7 @@ use crate::thermal::Lubricant;
 struct Settings {
     effects: Option<Vec<String>>,
     lubricant: String,
-    lubrication_factor_f0: f64,
+    lubrication_factor_f0: Option<f64>,
     spin_friction: f64,
     oil_air_temperature_c: f64,
     ambient_temperature_c: f64,
@@ -29,7 +31,32 @@ struct Settings {
     misalignment_rad: Option<f64>,
     extra_heat_w: f64,
     housing_conductance_scale: f64,
-    churning_oil_fraction: f64,
+    churning_oil_fraction: Option<f64>,
+    heat: HeatArgs,
+}
+
+/// Heat-model keyword arguments (docs/concepts/physics.md §9).
+struct HeatArgs {
+    heat_model: String,
+    lubrication: Option<String>,
+    skf_series: Option<String>,
+    sliding_friction_ehl: Option<f64>,
+    replenishment_krs: Option<f64>,
+    seal_moment_nmm: f64,
+}
+
+impl HeatArgs {
+    /// Parsed heat model and SKF settings.
+    fn parse(&self) -> Result<(HeatModel, SkfSettings)> {
+        let skf = SkfSettings {
+            series: self.skf_series.as_deref().map(SkfSeries::from_name).transpose()?,
+            mu_ehl: self.sliding_friction_ehl,
+            replenishment_krs: self.replenishment_krs,
+            seal_moment_n_m: self.seal_moment_nmm * 1e-3,
+        };
+        skf.validate()?;
+        Ok((HeatModel::from_name(&self.heat_model)?, skf))
+    }
 }
 
 impl Settings {
@@ -44,13 +71,23 @@ impl Settings {
             self.housing_material,
         )?;
         let mounting = seed_a_mounting(&p);
+        let (heat_model, skf) = self.heat.parse()?;
+        let (lubrication, f0, x) = resolve_lubrication(
+            self.heat.lubrication.as_deref(),
+            bearing.geometry.bearing_type,
+            self.lubrication_factor_f0,
+            self.churning_oil_fraction,
+        )?;
         let options = CoupledOptions {
+            heat_model,
+            lubrication,
+            skf,
+            lubrication_factor_f0: f0,
+            churning_oil_fraction: x,
             solve,
-            lubrication_factor_f0: self.lubrication_factor_f0,
             spin_friction: self.spin_friction,
             extra_heat_w: self.extra_heat_w,
             housing_conductance_scale: self.housing_conductance_scale,
-            churning_oil_fraction: self.churning_oil_fraction,
             ..CoupledOptions::default()
         };
         CoupledBearing::new(bearing, p, mounting, options)
@@ -62,12 +99,14 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
     d.set_item("node", s.node_names.clone())?;
     d.set_item("temperature_c", s.temperatures_c.clone().into_pyarray(py))?;
     let h = &s.heat;
-    d.set_item(
-        "source",
-        vec!["load", "viscous", "inner_spin", "outer_spin", "extra", "churning"],
-    )?;
-    d.set_item(
-        "heat_w",
+    let sources = if h.skf.is_some() {
+        vec!["rolling", "sliding", "seal", "extra", "churning"]
+    } else {
+        vec!["load", "viscous", "inner_spin", "outer_spin", "extra", "churning"]
+    };
+    let heats = if h.skf.is_some() {
+        vec![h.load_w, h.viscous_w, h.seal_w, h.extra_w, h.churning_w]
+    } else {
         vec![
             h.load_w,
             h.viscous_w,
@@ -76,8 +115,15 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
             h.extra_w,
             h.churning_w,
         ]
-        .into_pyarray(py),
-    )?;
+    };
+    d.set_item("source", sources)?;
+    d.set_item("heat_w", heats.into_pyarray(py))?;
+    d.set_item("heat_model", if h.skf.is_some() { "skf" } else { "palmgren" })?;
+    if let Some(k) = &h.skf {
+        d.set_item("skf_phi_ish", k.phi_ish)?;
+        d.set_item("skf_phi_rs", k.phi_rs)?;
+        d.set_item("skf_mu_sliding", k.mu_sliding)?;
+    }
     d.set_item("part", vec!["inner_ring", "balls", "outer_ring"])?;
     d.set_item(
         "part_heat_w",
@@ -133,7 +179,7 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
 
 /// Coupled thermal steady state of one bearing in the seed A network.
 #[pyfunction]
-#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, churning_oil_fraction=0.0))]
+#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=None, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, churning_oil_fraction=None, heat_model="palmgren".to_string(), lubrication=None, skf_series=None, sliding_friction_ehl=None, replenishment_krs=None, seal_moment_nmm=0.0))]
 #[allow(clippy::too_many_arguments)]
 pub fn thermal_state<'py>(
     py: Python<'py>,
@@ -143,7 +189,7 @@ pub fn thermal_state<'py>(
     radial_n: f64,
     effects: Option<Vec<String>>,
     lubricant: String,
-    lubrication_factor_f0: f64,
+    lubrication_factor_f0: Option<f64>,
     spin_friction: f64,
     oil_air_temperature_c: f64,
     ambient_temperature_c: f64,
@@ -152,7 +198,13 @@ pub fn thermal_state<'py>(
     misalignment_rad: Option<f64>,
     extra_heat_w: f64,
     housing_conductance_scale: f64,
-    churning_oil_fraction: f64,
+    churning_oil_fraction: Option<f64>,
+    heat_model: String,
+    lubrication: Option<String>,
+    skf_series: Option<String>,
+    sliding_friction_ehl: Option<f64>,
+    replenishment_krs: Option<f64>,
+    seal_moment_nmm: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let settings = Settings {
         effects,
@@ -167,6 +219,14 @@ pub fn thermal_state<'py>(
         extra_heat_w,
         housing_conductance_scale,
         churning_oil_fraction,
+        heat: HeatArgs {
+            heat_model,
+            lubrication,
+            skf_series,
+            sliding_friction_ehl,
+            replenishment_krs,
+            seal_moment_nmm,
+        },
     };
     let b = &bearing.inner;
     let (c, s) = py
@@ -181,7 +241,7 @@ pub fn thermal_state<'py>(
 
 /// Thermal stiffness curve: the coupled state at every speed, in parallel.
 #[pyfunction]
-#[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=1.0, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, churning_oil_fraction=0.0, progress=None))]
+#[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=None, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, churning_oil_fraction=None, heat_model="palmgren".to_string(), lubrication=None, skf_series=None, sliding_friction_ehl=None, replenishment_krs=None, seal_moment_nmm=0.0, progress=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn thermal_stiffness_curve<'py>(
     py: Python<'py>,
@@ -191,7 +251,7 @@ pub fn thermal_stiffness_curve<'py>(
     radial_n: f64,
     effects: Option<Vec<String>>,
     lubricant: String,
-    lubrication_factor_f0: f64,
+    lubrication_factor_f0: Option<f64>,
     spin_friction: f64,
     oil_air_temperature_c: f64,
     ambient_temperature_c: f64,
@@ -200,7 +260,13 @@ pub fn thermal_stiffness_curve<'py>(
     misalignment_rad: Option<f64>,
     extra_heat_w: f64,
     housing_conductance_scale: f64,
-    churning_oil_fraction: f64,
+    churning_oil_fraction: Option<f64>,
+    heat_model: String,
+    lubrication: Option<String>,
+    skf_series: Option<String>,
+    sliding_friction_ehl: Option<f64>,
+    replenishment_krs: Option<f64>,
+    seal_moment_nmm: f64,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let speeds = speeds_rpm.as_slice()?.to_vec();
@@ -217,6 +283,14 @@ pub fn thermal_stiffness_curve<'py>(
         extra_heat_w,
         housing_conductance_scale,
         churning_oil_fraction,
+        heat: HeatArgs {
+            heat_model,
+            lubrication,
+            skf_series,
+            sliding_friction_ehl,
+            replenishment_krs,
+            seal_moment_nmm,
+        },
     };
     let c = settings.build(&bearing.inner).py_err()?;
     let results = chunked_map(py, &speeds, default_chunk(speeds.len()), progress.as_ref(), |&n| {
@@ -406,5 +480,47 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(seed_a_steady_temperatures, m)?)?;
     m.add_function(wrap_pyfunction!(thermal_state, m)?)?;
     m.add_function(wrap_pyfunction!(thermal_stiffness_curve, m)?)?;
+    m.add_function(wrap_pyfunction!(lubrication_defaults, m)?)?;
+    m.add_function(wrap_pyfunction!(skf_sliding_friction_ehl, m)?)?;
     Ok(())
+}
+
+/// Defaults a lubrication method sets for a bearing type
+/// (docs/concepts/physics.md §9): f0 and its bounds, the drag oil fraction
+/// X and its bounds, the SKF K_rs.
+#[pyfunction]
+pub fn lubrication_defaults<'py>(
+    py: Python<'py>,
+    lubrication: &str,
+    bearing_type: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    let l = Lubrication::from_name(lubrication).py_err()?;
+    let t = match bearing_type {
+        "deep_groove" | "deep-groove" => BearingType::DeepGroove,
+        "angular_contact" | "angular-contact" => BearingType::AngularContact,
+        _ => {
+            return Err(crate::error::Error::config(
+                "bearing_type",
+                bearing_type,
+                "deep_groove or angular_contact",
+            ))
+            .py_err()
+        }
+    };
+    let x = l.defaults(t);
+    let d = PyDict::new(py);
+    d.set_item("lubrication", l.name())?;
+    d.set_item("lubrication_factor_f0", x.lubrication_factor_f0)?;
+    d.set_item("f0_bounds", x.f0_bounds)?;
+    d.set_item("oil_volume_fraction", x.oil_volume_fraction)?;
+    d.set_item("oil_fraction_bounds", x.oil_fraction_bounds)?;
+    d.set_item("replenishment_krs", x.replenishment_krs)?;
+    Ok(d)
+}
+
+/// The SKF full-film sliding coefficient mu_EHL the heat model takes for a
+/// lubricant when none is given (docs/concepts/physics.md §9).
+#[pyfunction]
+pub fn skf_sliding_friction_ehl(lubricant: &str) -> f64 {
+    crate::thermal::friction::skf_mu_ehl_for_lubricant(lubricant)
 }

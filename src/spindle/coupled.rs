@@ -54,10 +54,12 @@ use super::pair::{BearingPair, PairLoad, PairState, PairWarm, Preload};
 use super::shaft_loads::CoreMagneticPull;
 use crate::bearing::{BearingModel, BearingState, RacewayOffsets, SolveOptions};
 use crate::effects::{Effect, EffectSet};
-use crate::error::{finite, non_negative, positive, Error, Result};
+use crate::error::{finite, in_range, non_negative, positive, Error, Result};
 use crate::materials::Material;
+use crate::thermal::coupled::cage_speed_rad_s;
 use crate::thermal::expansion::{thermal_offsets, ComponentRises, Mounting, RingFit, ThermalOffsets};
-use crate::thermal::heat::{bearing_heat, load_moment_n_m, viscous_moment_n_m, BearingHeat, HeatSplit, SpinContact};
+use crate::thermal::friction::{friction_heat, FrictionPoint, FrictionSettings, HeatModel, Lubrication, SkfSettings};
+use crate::thermal::heat::{BearingHeat, HeatSplit, SpinContact};
 use crate::thermal::network::{SteadySolver, Temperatures, Transient, TransientSolver};
 use crate::thermal::presets::{BallConduction, SpindleNetwork, SpindleParams};
 use crate::units::rpm_to_rad_s;
@@ -91,6 +93,19 @@ pub struct SpindleConfig {
     /// ([`super::shaft_loads`]). None: no air-gap data (the effect is then
     /// refused).
     pub magnetic_pull: Option<CoreMagneticPull>,
+    /// Heat model of the bearings (docs/concepts/physics.md §9; default Palmgren).
+    #[serde(default)]
+    pub heat_model: HeatModel,
+    /// Lubrication method (SKF K_rs default; default oil-air, seed B's).
+    #[serde(default = "default_lubrication")]
+    pub lubrication: Lubrication,
+    /// Oil volume fraction X of the ball drag in the bearing cavities
+    /// (0..1; default 0, off).
+    #[serde(default)]
+    pub churning_oil_fraction: f64,
+    /// Settings of the SKF-style model.
+    #[serde(default)]
+    pub skf: SkfSettings,
     /// Largest fixed-point iterations of the coupled steady state.
     pub max_iterations: usize,
     /// Converged when no node temperature moves more than this \[K\].
@@ -135,10 +150,18 @@ impl SpindleConfig {
             assembly_temperature_c: ambient,
             effects: EffectSet::all().without(Effect::UnbalancedMagneticPull),
             magnetic_pull: Some(magnetic_pull),
+            heat_model: HeatModel::Palmgren,
+            lubrication: Lubrication::OilAir,
+            churning_oil_fraction: 0.0,
+            skf: SkfSettings::default(),
             max_iterations: 60,
             tolerance_k: 1e-4,
         })
     }
+}
+
+fn default_lubrication() -> Lubrication {
+    Lubrication::OilAir
 }
 
 /// Per-pair constants of the heat model.
@@ -174,10 +197,12 @@ pub struct BearingHeatReport {
     pub heat: BearingHeat,
     /// Burton-Staph split to inner ring, balls, outer ring \[W\].
     pub split: HeatSplit,
-    /// Palmgren load moment M1 (A-20) [N m].
+    /// Palmgren load moment M1, or the SKF rolling moment M_rr [N m].
     pub load_moment_n_m: f64,
-    /// Palmgren viscous moment Mv (A-21) [N m].
+    /// Palmgren viscous moment Mv, or the SKF sliding moment M_sl [N m].
     pub viscous_moment_n_m: f64,
+    /// Ball drag heat at the configured oil fraction \[W\].
+    pub drag_w: f64,
 }
 
 /// A solved spindle operating point.
@@ -261,6 +286,8 @@ impl Spindle {
     /// Build the pairs and the network.
     pub fn new(config: SpindleConfig) -> Result<Self> {
         non_negative("spin_friction", config.spin_friction)?;
+        in_range("churning_oil_fraction", config.churning_oil_fraction, 0.0, 1.0)?;
+        config.skf.validate()?;
         finite("radial_load_n", config.radial_load_n)?;
         finite("assembly_temperature_c", config.assembly_temperature_c)?;
         positive("tolerance_k", config.tolerance_k)?;
@@ -501,14 +528,8 @@ impl Spindle {
         let radial = l[0].hypot(l[1]);
         let nb = state.balls.len().max(1) as f64;
         let alpha = state.balls.iter().map(|b| b.inner_contact_angle_rad).sum::<f64>() / nb;
-        let m1 = load_moment_n_m(g, axial, radial, alpha)?;
-        let nu = self.config.params.lubricant.kinematic_viscosity_cst(oil_c)?;
-        let mv = viscous_moment_n_m(
-            self.config.params.lubrication_factor_f0,
-            nu,
-            speed_rpm,
-            g.pitch_diameter_m,
-        )?;
+        let lub = &self.config.params.lubricant;
+        let nu = lub.kinematic_viscosity_cst(oil_c)?;
         let contacts = |inner: bool| -> Vec<SpinContact> {
             state
                 .balls
@@ -533,12 +554,36 @@ impl Spindle {
         } else {
             (Vec::new(), Vec::new())
         };
-        let heat = bearing_heat(rpm_to_rad_s(speed_rpm), m1, mv, self.config.spin_friction, &ci, &co)?;
+        let c = &self.config;
+        let settings = FrictionSettings {
+            heat_model: c.heat_model,
+            lubrication: c.lubrication,
+            lubrication_factor_f0: c.params.lubrication_factor_f0,
+            spin_friction: c.spin_friction,
+            oil_volume_fraction: c.churning_oil_fraction,
+            skf: c.skf,
+        };
+        let point = FrictionPoint {
+            geometry: g,
+            axial_n: axial,
+            radial_n: radial,
+            contact_angle_rad: alpha,
+            speed_rpm,
+            viscosity_cst: nu,
+            oil_density_kg_m3: lub.density_kg_m3(oil_c)?,
+            cage_speed_rad_s: cage_speed_rad_s(state),
+            ball_mass_kg: bearing.ball_mass_kg(),
+            lubricant_name: &lub.name,
+            inner_contacts: &ci,
+            outer_contacts: &co,
+        };
+        let f = friction_heat(&settings, &point)?;
         Ok(BearingHeatReport {
-            heat,
-            split: heat.split(),
-            load_moment_n_m: m1,
-            viscous_moment_n_m: mv,
+            heat: f.heat,
+            split: f.heat.split(),
+            load_moment_n_m: f.load_moment_n_m,
+            viscous_moment_n_m: f.viscous_moment_n_m,
+            drag_w: f.drag_w,
         })
     }
 

@@ -27,7 +27,7 @@
 //!    |omega_s| (3/8) mu_s Q a E (`spin_friction`), E by Hamrock-Brewe at
 //!    the operating contact angle; optionally the ball drag ("churning") in
 //!    the oil-air mixture, Z (pi/64) C_D X rho_oil D^2 dm^3 omega_c^3
-//!    ([`ball_drag_power_w`], Harris & Kotzalas) at the cage speed of the
+//!    ([`super::heat::ball_drag_power_w`], Harris & Kotzalas) at the cage speed of the
 //!    solved state and the oil density at the oil temperature of Mv, when
 //!    [`CoupledOptions::churning_oil_fraction`] X > 0;
 //! 5. Burton-Staph split (A-27) -> steady network (Newton, warm start).
@@ -53,10 +53,10 @@
 use rayon::prelude::*;
 
 use super::expansion::{thermal_offsets, ComponentRises, Mounting, RingFit, ThermalOffsets};
-use super::heat::{
-    ball_drag_power_w, bearing_heat, load_moment_n_m, viscous_moment_n_m, BearingHeat, HeatSplit, SpinContact,
-    SPHERE_DRAG_COEFFICIENT,
+use super::friction::{
+    friction_heat, FrictionPoint, FrictionSettings, HeatModel, Lubrication, SkfMoments, SkfSettings,
 };
+use super::heat::{BearingHeat, HeatSplit, SpinContact};
 use super::lubricant::Lubricant;
 use super::network::SteadySolver;
 use super::presets::{seed_a_network, BearingNetwork, SeedAParams};
@@ -95,11 +95,20 @@ pub struct CoupledOptions {
     /// Oil volume fraction X of the oil-air mixture in the bearing cavity
     /// (0..1, dimensionless) for the ball drag ("churning") loss
     /// Z (pi/64) C_D X rho_oil D^2 dm^3 omega_c^3 (Harris & Kotzalas; C_D =
-    /// [`SPHERE_DRAG_COEFFICIENT`]). It is dissipated in the lubricant
+    /// [`super::heat::SPHERE_DRAG_COEFFICIENT`]). It is dissipated in the lubricant
     /// between the rings like the Palmgren viscous loss Mv, so it is split
     /// like rolling heat (A-27: 1/4 inner ring, 1/2 balls, 1/4 outer ring).
     /// Calibration input; default 0 (off: seed A's heat, A-23).
     pub churning_oil_fraction: f64,
+    /// Heat model (docs/concepts/physics.md §9): Palmgren (default, the
+    /// seeds') or the four-term SKF-style model.
+    pub heat_model: HeatModel,
+    /// Lubrication method: the SKF replenishment constant K_rs when not set
+    /// in `skf` (the f0 and X defaults of a method are applied by the
+    /// caller through [`Lubrication::defaults`]). Default oil-air (seed A).
+    pub lubrication: Lubrication,
+    /// Settings of the SKF-style model (series, mu_EHL, K_rs, seal moment).
+    pub skf: SkfSettings,
     /// Scale on the housing-to-ambient convection conductance (link R_h-a,
     /// natural convection h = C dT^0.25 scaled through C): a housing that
     /// sheds heat better (fins, air flow, conduction into the machine) or
@@ -122,6 +131,9 @@ impl Default for CoupledOptions {
             reference_temperature_c: None,
             extra_heat_w: 0.0,
             churning_oil_fraction: 0.0,
+            heat_model: HeatModel::Palmgren,
+            lubrication: Lubrication::OilAir,
+            skf: SkfSettings::default(),
             housing_conductance_scale: 1.0,
             tolerance_k: 1e-6,
             tolerance_m: 1e-12,
@@ -144,6 +156,7 @@ impl CoupledOptions {
         in_range("extra_heat_w", self.extra_heat_w, 0.0, 1e4)?;
         // A volume fraction: 0 (dry air) .. 1 (flooded cavity).
         in_range("churning_oil_fraction", self.churning_oil_fraction, 0.0, 1.0)?;
+        self.skf.validate()?;
         positive("housing_conductance_scale", self.housing_conductance_scale)?;
         in_range("housing_conductance_scale", self.housing_conductance_scale, 0.01, 100.0)?;
         positive("tolerance_k", self.tolerance_k)?;
@@ -175,14 +188,20 @@ pub fn seed_a_mounting(params: &SeedAParams) -> Mounting {
 /// Heat of one operating point, by mechanism.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HeatReport {
-    /// Palmgren load moment M1 (A-20) [N m].
+    /// Palmgren load moment M1, or the SKF rolling moment M_rr [N m].
     pub load_moment_n_m: f64,
-    /// Palmgren viscous moment Mv (A-21) [N m].
+    /// Palmgren viscous moment Mv, or the SKF sliding moment M_sl [N m].
     pub viscous_moment_n_m: f64,
-    /// Load friction heat omega M1 \[W\].
+    /// SKF seal moment (0 with Palmgren) [N m].
+    pub seal_moment_n_m: f64,
+    /// Load friction heat omega M1 (SKF: omega M_rr) \[W\].
     pub load_w: f64,
-    /// Viscous friction heat omega Mv \[W\].
+    /// Viscous friction heat omega Mv (SKF: omega M_sl) \[W\].
     pub viscous_w: f64,
+    /// Seal friction heat omega M_seal \[W\].
+    pub seal_w: f64,
+    /// The SKF reduction factors and sliding coefficient (SKF model only).
+    pub skf: Option<SkfMoments>,
     /// Oil temperature used in Mv and in the oil density \[C\]: the ball node
     /// with `temperature_dependent_viscosity` on, else the oil-air supply.
     pub oil_temperature_c: f64,
@@ -261,7 +280,20 @@ pub fn spin_contacts(bearing: &Bearing, state: &BearingState) -> (Vec<SpinContac
     (inner, outer)
 }
 
-/// Heat of a solved bearing (A-20..A-23, A-27) with oil at `oil_c`.
+/// The friction settings of `options` (heat model, f0, mu_s, X, SKF).
+pub fn friction_settings(options: &CoupledOptions) -> FrictionSettings {
+    FrictionSettings {
+        heat_model: options.heat_model,
+        lubrication: options.lubrication,
+        lubrication_factor_f0: options.lubrication_factor_f0,
+        spin_friction: options.spin_friction,
+        oil_volume_fraction: options.churning_oil_fraction,
+        skf: options.skf,
+    }
+}
+
+/// Heat of a solved bearing (A-20..A-23, A-27, or the SKF-style model,
+/// docs/concepts/physics.md §9) with oil at `oil_c`.
 #[allow(clippy::too_many_arguments)]
 pub fn operating_heat(
     bearing: &Bearing,
@@ -272,43 +304,44 @@ pub fn operating_heat(
     oil_c: f64,
     options: &CoupledOptions,
 ) -> Result<HeatReport> {
-    let g = &bearing.geometry;
     let omega = rpm_to_rad_s(state.speed_rpm);
-    let m1 = load_moment_n_m(
-        g,
-        axial_n.abs(),
-        radial_n.abs(),
-        mean_inner_contact_angle_rad(bearing, state),
-    )?;
     let nu = lubricant.kinematic_viscosity_cst(oil_c)?;
-    let mv = viscous_moment_n_m(options.lubrication_factor_f0, nu, state.speed_rpm, g.pitch_diameter_m)?;
     let (ci, co) = if options.solve.effects.has(Effect::SpinFriction) {
         spin_contacts(bearing, state)
     } else {
         (Vec::new(), Vec::new())
     };
-    let mut heat = bearing_heat(omega, m1, mv, options.spin_friction, &ci, &co)?;
     let cage = cage_speed_rad_s(state);
     let rho = lubricant.density_kg_m3(oil_c)?;
-    let churning_w = ball_drag_power_w(
-        g.ball_count,
-        g.ball_diameter_m,
-        g.pitch_diameter_m,
-        cage,
-        rho,
-        options.churning_oil_fraction,
-        SPHERE_DRAG_COEFFICIENT,
-    )?;
-    // The extra heat and the ball drag heat are split like rolling
-    // friction heat.
-    heat.rolling_w += options.extra_heat_w + churning_w;
+    let point = FrictionPoint {
+        geometry: &bearing.geometry,
+        axial_n: axial_n.abs(),
+        radial_n: radial_n.abs(),
+        contact_angle_rad: mean_inner_contact_angle_rad(bearing, state),
+        speed_rpm: state.speed_rpm,
+        viscosity_cst: nu,
+        oil_density_kg_m3: rho,
+        cage_speed_rad_s: cage,
+        ball_mass_kg: bearing.ball_mass_kg(),
+        lubricant_name: &lubricant.name,
+        inner_contacts: &ci,
+        outer_contacts: &co,
+    };
+    let f = friction_heat(&friction_settings(options), &point)?;
+    let mut heat = f.heat;
+    // The extra heat is split like rolling friction heat; the ball
+    // drag heat is already in the rolling part.
+    heat.rolling_w += options.extra_heat_w;
     Ok(HeatReport {
-        load_moment_n_m: m1,
-        viscous_moment_n_m: mv,
-        load_w: omega * m1,
-        viscous_w: omega * mv,
+        load_moment_n_m: f.load_moment_n_m,
+        viscous_moment_n_m: f.viscous_moment_n_m,
+        seal_moment_n_m: f.seal_moment_n_m,
+        load_w: omega * f.load_moment_n_m,
+        viscous_w: omega * f.viscous_moment_n_m,
+        seal_w: omega * f.seal_moment_n_m,
+        skf: f.skf,
         extra_w: options.extra_heat_w,
-        churning_w,
+        churning_w: f.drag_w,
         cage_speed_rad_s: cage,
         oil_density_kg_m3: rho,
         oil_temperature_c: oil_c,
@@ -754,6 +787,7 @@ pub fn stiffness_curve_mode(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::thermal::heat::bearing_heat;
 
     /// Seed A: 300 N preload + 2380.9 N axial, 1189.9 N radial (100 N m).
     const FA: f64 = 2680.9;

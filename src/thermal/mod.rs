@@ -11,6 +11,7 @@
 
 pub mod coupled;
 pub mod expansion;
+pub mod friction;
 pub mod heat;
 pub mod lubricant;
 pub mod network;

@@ -66,6 +66,12 @@ def _cmd_diagnose(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_validate(args: argparse.Namespace) -> int:
+    from .validate import validate_command
+
+    return validate_command(Path(args.out), args.sets)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     p = argparse.ArgumentParser(
         prog="thermobear",
@@ -102,6 +108,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     g.add_argument("--out", default=None, help="folder for tables and figures")
     g.set_defaults(func=_cmd_diagnose)
+    v = sub.add_parser("validate", help="model, diagnose and calibrate the published data sets")
+    v.add_argument("sets", nargs="*", metavar="SET", help="set names (default: all)")
+    v.add_argument(
+        "--out", default="thermobear-validation", help="report folder (default: %(default)s)"
+    )
+    v.set_defaults(func=_cmd_validate)
     args = p.parse_args(argv)
     from ..errors import ThermobearError
 

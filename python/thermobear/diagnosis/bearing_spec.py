@@ -9,10 +9,10 @@ from typing import Any, Optional, Sequence, Union
 import numpy as np
 
 from ..errors import ConfigError, ThermobearError
-from .candidates import Candidate, _candidate_list
+from .candidates import Candidate, _candidate_list, load_level_candidates
 from .measurements import QUANTITIES
 from .protocol import ModelSpec
-from .registry import _THERMAL_DEFAULTS
+from .registry import _THERMAL_DEFAULTS, LOAD_SCALE_OPTIONS
 
 
 class BearingModelSpec(ModelSpec):
@@ -21,7 +21,11 @@ class BearingModelSpec(ModelSpec):
     :func:`thermobear.thermal_state` (``lubricant``,
     ``lubrication_factor_f0``, ``spin_friction``, ``oil_air_temperature_c``,
     ``ambient_temperature_c``, ``housing_material``, ``raceway_control``,
-    ``extra_heat_w``, ``housing_conductance_scale``).
+    ``extra_heat_w``, ``housing_conductance_scale``, ``churning_oil_fraction``,
+    ``heat_model``, ``lubrication``, ``sliding_friction_ehl``,
+    ``replenishment_krs``) and the load scales ``axial_load_scale``,
+    ``radial_load_scale`` (default 1; per level ``axial_load_scale@<N>``)
+    applied to the stated loads of the measured conditions.
     Evaluates every quantity of :data:`QUANTITIES` at given conditions; each
     configuration is solved once per set of conditions (cached).
 
@@ -45,14 +49,10 @@ class BearingModelSpec(ModelSpec):
         for e in eff:
             if e not in known:
                 raise ConfigError(f"invalid effect = {e!r}: known: {', '.join(known)}")
-        for k in options:
-            if k not in _THERMAL_DEFAULTS:
-                raise ConfigError(
-                    f"invalid option = {k!r}: known: {', '.join(sorted(_THERMAL_DEFAULTS))}"
-                )
+        _check_option_names(options)
         self.bearing = bearing
         self.effects = tuple(sorted(eff))
-        self.options = {**_THERMAL_DEFAULTS, **options}
+        self.options = {**_THERMAL_DEFAULTS, **_lubrication_options(bearing, options), **options}
         self._cache: dict = {}
 
     def with_setting(self, add_effects: Sequence[str] = (), **options: Any) -> "BearingModelSpec":
@@ -60,9 +60,50 @@ class BearingModelSpec(ModelSpec):
         new = object.__new__(BearingModelSpec)
         new.bearing = self.bearing
         new.effects = tuple(sorted(set(self.effects) | set(add_effects)))
+        _check_option_names(options)
         new.options = {**self.options, **options}
         new._cache = self._cache
         return new
+
+    def loads(self, axial_n: float, radial_n: float) -> tuple[float, float]:
+        """The loads the model applies for stated ``axial_n``, ``radial_n``
+        [N]: times the load scales (``axial_load_scale``,
+        ``radial_load_scale``) and the scale of the level
+        (``axial_load_scale@<level>``, ``radial_load_scale@<level>``)."""
+        o = self.options
+        fa = (
+            axial_n
+            * float(o["axial_load_scale"])
+            * float(o.get(f"axial_load_scale@{axial_n:g}", 1.0))
+        )
+        fr = (
+            radial_n
+            * float(o["radial_load_scale"])
+            * float(o.get(f"radial_load_scale@{radial_n:g}", 1.0))
+        )
+        return fa, fr
+
+    def thermal_options(self) -> dict:
+        """The options as :func:`thermobear.thermal_state` keywords (the
+        load scales removed, unset SKF inputs left to their defaults)."""
+        return {
+            k: v
+            for k, v in self.options.items()
+            if k not in LOAD_SCALE_OPTIONS and "@" not in k and v is not None
+        }
+
+    def level_candidates(
+        self,
+        conditions: "polars.DataFrame",  # noqa: F821
+        min_levels: int = 2,
+    ) -> list[Candidate]:
+        """One load-scale candidate per axial and per radial load level of
+        ``conditions`` (``min_levels`` or more levels each)."""
+        allq = tuple(QUANTITIES)
+        ax, ra = conditions["axial_n"].to_list(), conditions["radial_n"].to_list()
+        return load_level_candidates(
+            "axial_load_scale", ax, allq, "axial load", min_levels
+        ) + load_level_candidates("radial_load_scale", ra, allq, "radial load", min_levels)
 
     def predict(self, conditions: "polars.DataFrame") -> dict[str, np.ndarray]:  # noqa: F821
         """Every supported quantity at each row of ``conditions``
@@ -73,14 +114,17 @@ class BearingModelSpec(ModelSpec):
         ax = conditions["axial_n"].to_numpy()
         ra = conditions["radial_n"].to_numpy()
         out = {q: np.empty(len(sp)) for q in QUANTITIES}
+        topts = self.thermal_options()
+        tkey = (self.effects, tuple(sorted((k, str(v)) for k, v in topts.items())))
         for a, r in sorted(set(zip(ax.tolist(), ra.tolist(), strict=False))):
             rows = np.flatnonzero((ax == a) & (ra == r))
             speeds = np.unique(sp[rows])
-            key = (self._key(), a, r, tuple(speeds.tolist()))
+            fa, fr = self.loads(a, r)
+            key = (tkey, fa, fr, tuple(speeds.tolist()))
             if key not in self._cache:
                 try:
                     df = thermal_stiffness_curve(
-                        self.bearing, speeds, a, r, effects=list(self.effects), **self.options
+                        self.bearing, speeds, fa, fr, effects=list(self.effects), **topts
                     )
                 except ThermobearError as e:  # a failing configuration fails every time
                     self._cache[key] = e
@@ -105,10 +149,34 @@ class BearingModelSpec(ModelSpec):
         return f"BearingModelSpec({self.bearing!r}, effects={list(self.effects)})"
 
 
+def _check_option_names(options: dict) -> None:
+    for k in options:
+        level = k.split("@", 1)
+        if k in _THERMAL_DEFAULTS or (len(level) == 2 and level[0] in LOAD_SCALE_OPTIONS):
+            continue
+        raise ConfigError(f"invalid option = {k!r}: known: {', '.join(sorted(_THERMAL_DEFAULTS))}")
+
+
+def _lubrication_options(bearing: Any, options: dict) -> dict:
+    """With a ``lubrication`` method among ``options``, the f0 and drag
+    oil fraction it sets (docs/concepts/physics.md §9) where not given."""
+    from .. import _native
+
+    lub = options.get("lubrication")
+    if lub is None:
+        return {}
+    d = _native.lubrication_defaults(str(lub), bearing.bearing_type.replace("-", "_"))
+    return {
+        "lubrication_factor_f0": float(d["lubrication_factor_f0"]),
+        "churning_oil_fraction": float(d["oil_volume_fraction"]),
+    }
+
+
 def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, dict]:
     """The baseline :class:`BearingModelSpec` of a system description
-    ([bearing], [model] effects, raceway_control, extra_heat_w and
-    housing_conductance_scale; the other thermal options take their
+    ([bearing], [model] effects, raceway_control, extra_heat_w,
+    housing_conductance_scale, churning_oil_fraction, heat_model and
+    lubrication; the other thermal options take their
     :func:`thermobear.thermal_state` defaults) and its [operating]
     table (loads for measurements that give none)."""
     from ..bearing import Bearing
@@ -123,5 +191,8 @@ def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, d
     for key in ("extra_heat_w", "housing_conductance_scale", "churning_oil_fraction"):
         if key in mdl:
             opts[key] = float(mdl[key])
+    for key in ("heat_model", "lubrication"):
+        if key in mdl:
+            opts[key] = str(mdl[key])
     spec = BearingModelSpec(Bearing.from_toml(text), effects=mdl.get("effects"), **opts)
     return spec, cfg.get("operating", {})

@@ -6,14 +6,22 @@ bearing's candidate list and the candidate table (:func:`candidates`)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Optional, Sequence
+from typing import Any, Optional, Sequence
 
 import numpy as np
 
 from ..errors import ConfigError
 from .measurements import QUANTITIES
 from .protocol import ModelSpec
-from .registry import _HOUSING_MATERIALS, _PARAMETERS, _THERMAL_DEFAULTS, NOT_IN_BEARING
+from .registry import (
+    _HOUSING_MATERIALS,
+    _PARAMETERS,
+    _THERMAL_DEFAULTS,
+    HEAT_MODELS,
+    LOAD_SCALE_BOUNDS,
+    NOT_IN_BEARING,
+    SKF_PARAMETERS,
+)
 
 
 @dataclass(frozen=True)
@@ -66,7 +74,9 @@ def _candidate_list(model: Optional[ModelSpec], quantities: Sequence[str] = ()) 
                 effect=name,
             )
         )
+    lub_bounds = _lubrication_bounds(model)
     for name, opt, unit, lo, hi, is_off, role, desc in _PARAMETERS:
+        lo, hi = lub_bounds.get(opt, (lo, hi))
         base = float(opts[opt])
         if is_off:
             null, lo_, hi_ = 0.0, lo, hi
@@ -108,8 +118,154 @@ def _candidate_list(model: Optional[ModelSpec], quantities: Sequence[str] = ()) 
                     role="calibration",
                 )
             )
+    out += heat_model_candidates(opts, tuple(QUANTITIES))
     out += sensor_offset_candidates(quantities, QUANTITIES)
+    out += sensor_gain_candidates(quantities, QUANTITIES)
     return out
+
+
+def _lubrication_bounds(model: Optional[ModelSpec]) -> dict:
+    """f0 and drag oil-fraction bounds of the baseline's lubrication method
+    (none without one): option -> (lower, upper)."""
+    from .. import _native
+
+    lub = None if model is None else model.options.get("lubrication")
+    if lub is None:
+        return {}
+    d = _native.lubrication_defaults(str(lub), model.bearing.bearing_type.replace("-", "_"))
+    return {
+        "lubrication_factor_f0": tuple(d["f0_bounds"]),
+        "churning_oil_fraction": tuple(d["oil_fraction_bounds"]),
+    }
+
+
+def heat_model_candidates(opts: dict, affects: tuple, skf_inputs: bool = True) -> list[Candidate]:
+    """The other heat models (docs/concepts/physics.md §9) as switches
+    (role "effect": a heat model the baseline leaves out) and, when the
+    baseline uses the SKF-style model, its calibratable inputs (mu_EHL,
+    K_rs; bounds and sources in :data:`SKF_PARAMETERS`) unless
+    ``skf_inputs`` is false (a model without those options)."""
+    base = str(opts.get("heat_model", "palmgren"))
+    out = [
+        Candidate(
+            f"heat_model:{hm}",
+            "switch",
+            "model",
+            f"heat_model_is_{hm}",
+            "1",
+            0.0,
+            1.0,
+            0.0,
+            desc,
+            affects,
+            option="heat_model",
+            role="effect",
+        )  # fmt: skip
+        for hm, desc in HEAT_MODELS.items()
+        if hm != base
+    ]
+    if base == "skf" and skf_inputs:
+        for opt, unit, lo, hi, desc in SKF_PARAMETERS:
+            null = _skf_null(opts, opt)
+            out.append(
+                Candidate(
+                    opt,
+                    "parameter",
+                    "model",
+                    opt,
+                    unit,
+                    min(lo, null),
+                    max(hi, null),
+                    null,
+                    desc,
+                    affects,
+                    option=opt,
+                    role="calibration",
+                )  # fmt: skip
+            )
+    return out
+
+
+def _skf_null(opts: dict, opt: str) -> float:
+    """The baseline's value of an SKF input (its default when not set)."""
+    from .. import _native
+
+    if opts.get(opt) is not None:
+        return float(opts[opt])
+    if opt == "sliding_friction_ehl":
+        return float(_native.skf_sliding_friction_ehl(str(opts.get("lubricant", "e-drive ATF"))))
+    d = _native.lubrication_defaults(str(opts.get("lubrication") or "oil-air"), "angular_contact")
+    return float(d["replenishment_krs"])
+
+
+#: Sensor gain bounds (relative): thermocouples +-2 % of the reading in C
+#: (IEC 60584-1 class 2 allows 0.75 % of the reading; an uncalibrated
+#: acquisition chain's gain adds about as much again -- our assumption);
+#: other absolute quantities (displacement probes, contact angles) +-10 %
+#: (a non-contact probe's sensitivity depends on the target material and
+#: is off by 5-10 % unless calibrated on it).
+SENSOR_GAIN_BOUNDS = {"temperature": 0.02, "other": 0.10}
+
+
+def sensor_gain_candidates(quantities: Sequence[str], table: dict) -> list:
+    """The measurement-side gain errors: the reading times (1 + g), one
+    per measured quantity (sensor) whose uncertainty is absolute (for
+    relative-sigma quantities the relative ``sensor_offset`` already is a
+    gain). Bounds: :data:`SENSOR_GAIN_BOUNDS`."""
+    out = []
+    for q in quantities:
+        if table[q][4]:
+            continue
+        b = SENSOR_GAIN_BOUNDS["temperature" if q.startswith("temperature_c") else "other"]
+        out.append(
+            Candidate(
+                f"sensor_gain:{q}",
+                "parameter",
+                "measurement",
+                "relative_gain",
+                "1",
+                -b,
+                b,
+                0.0,
+                f"sensor gain error on {q}",
+                (q,),
+                offset=True,
+                quantity=q,
+                role="measurement",
+                relative=True,
+            )  # fmt: skip
+        )
+    return out
+
+
+def load_level_candidates(
+    option: str, levels: Sequence[float], quantities: tuple, what: str, min_levels: int = 2
+) -> list[Candidate]:
+    """One load-scale candidate per non-zero load level
+    (``{option}@{level:g}``, bounds :data:`LOAD_SCALE_BOUNDS`, null 1) when
+    there are ``min_levels`` or more: a load cell or preload setting off at
+    one level only (with one level it is the global scale)."""
+    lv = sorted({float(v) for v in levels if float(v) != 0.0})
+    if len(lv) < min_levels:
+        return []
+    lo, hi = LOAD_SCALE_BOUNDS
+    return [
+        Candidate(
+            f"{option}@{v:g}",
+            "parameter",
+            "model",
+            f"{option}@{v:g}",
+            "1",
+            lo,
+            hi,
+            1.0,
+            f"{what} of the {v:g} N level differs from the stated one by a factor",
+            quantities,
+            option=f"{option}@{v:g}",
+            role="calibration",
+        )  # fmt: skip
+        for v in lv
+    ]
 
 
 def sensor_offset_candidates(quantities: Sequence[str], table: dict) -> list:
@@ -178,12 +334,22 @@ def candidates(
     )
 
 
-def candidate_pool(model: ModelSpec, quantity: np.ndarray, names: Optional[Sequence[str]]) -> list:
+def candidate_pool(
+    model: ModelSpec,
+    quantity: np.ndarray,
+    names: Optional[Sequence[str]],
+    conditions: Any = None,
+) -> list:
     """The candidates to screen against ``model``: its candidate list with
     a sensor-offset decoy per measured quantity (``quantity``: the quantity
     of each measured row), restricted to ``names`` when given (every name
-    must be a known candidate)."""
+    must be a known candidate). With the measured ``conditions`` (a frame
+    with ``axial_n`` / ``radial_n``) and a model that has
+    ``level_candidates(conditions)``, one load-scale candidate per load
+    level is added."""
     pool = model.candidate_list(sorted(set(quantity.tolist())))
+    if hasattr(model, "level_candidates"):
+        pool += model.level_candidates(*_levels(conditions, names))
     if names is None:
         return pool
     known = {c.name for c in pool}
@@ -191,6 +357,27 @@ def candidate_pool(model: ModelSpec, quantity: np.ndarray, names: Optional[Seque
         if n not in known:
             raise ConfigError(f"invalid candidate = {n!r}: known: {', '.join(sorted(known))}")
     return [c for c in pool if c.name in set(names)]
+
+
+def _levels(conditions: Any, names: Optional[Sequence[str]]) -> tuple[Any, int]:
+    """The load levels to build per-level candidates for and the fewest
+    levels that make them: the measured ``conditions`` (two or more levels),
+    else the levels named in ``names`` (``<option>@<N>``; any number)."""
+    import polars as pl
+
+    if conditions is not None:
+        return conditions, 2
+    ax, ra = [0.0], [0.0]
+    for n in names or ():
+        opt, _, level = str(n).partition("@")
+        if level and opt in ("axial_load_scale", "preload_scale"):
+            ax.append(float(level))
+        elif level and opt == "radial_load_scale":
+            ra.append(float(level))
+    n = max(len(ax), len(ra))
+    return pl.DataFrame(
+        {"axial_n": ax + [0.0] * (n - len(ax)), "radial_n": ra + [0.0] * (n - len(ra))}
+    ), 1
 
 
 def split_evaluable(pool: list) -> tuple[list, list[str]]:

@@ -22,7 +22,13 @@ from ..errors import ConfigError
 # churning oil volume fraction X of the cavity mixture 0-5 % (0: dry air;
 # our assumed upper end for a jet-lubricated, partly flooded cavity -- an oil
 # bath is the f0 range above; at 5 % a 7008C at 18,000 rpm dissipates
-# ~90 W of ball drag, about half its total friction heat).
+# ~90 W of ball drag, about half its total friction heat). With a
+# lubrication method in the baseline (``lubrication="jet"`` ...) the f0 and X
+# bounds are the method's (:func:`thermobear.lubrication_defaults`,
+# docs/concepts/physics.md §9); applied-load scales 0.7-1.3 (a load cell or
+# a preload set by spring length or spacer grinding off by up to 30 %: the
+# spread of preload measured on assembled spindles against the catalogue
+# class is of that order; bounds are our assumption).
 _PARAMETERS = (
     # (name, option, unit, lower, upper, offset?, role, description)
     ("lubrication_factor_f0", "lubrication_factor_f0", "1", 0.5, 6.0, False, "calibration",
@@ -39,7 +45,30 @@ _PARAMETERS = (
      "housing-to-ambient conductance differs from the bare natural-convection cylinder"),
     ("churning_oil_fraction", "churning_oil_fraction", "1", 0.0, 0.05, False, "effect",
      "churning: drag of the balls in the oil-air mixture, ~ speed^3 (oil volume fraction X)"),
+    ("axial_load_scale", "axial_load_scale", "1", 0.7, 1.3, False, "calibration",
+     "applied axial load (preload) differs from the stated one by a factor"),
+    ("radial_load_scale", "radial_load_scale", "1", 0.7, 1.3, False, "calibration",
+     "applied radial load differs from the stated one by a factor"),
 )  # fmt: skip
+
+#: Bounds of a per-load-level scale (as the load scales above).
+LOAD_SCALE_BOUNDS = (0.7, 1.3)
+
+#: The heat models (docs/concepts/physics.md §9): name -> description.
+HEAT_MODELS = {
+    "palmgren": "Palmgren load + viscous moments and spin heat (A-20..A-23): the seeds' model",
+    "skf": "SKF-style four-term moment: rolling (inlet shear, starvation) + sliding + seal",
+}
+
+#: SKF-model inputs calibrated when the baseline uses it: mu_EHL 0.02-0.15
+#: (the catalogue gives 0.04 synthetic, 0.05 mineral, 0.1 transmission
+#: fluids; we widen by a half each way for additive packages) and K_rs
+#: 1e-8-1.2e-7 (the catalogue's 3e-8 and 6e-8 for the two supply classes,
+#: a factor 3 / 2 beyond them).
+SKF_PARAMETERS = (
+    ("sliding_friction_ehl", "1", 0.02, 0.15, "SKF full-film sliding coefficient mu_EHL"),
+    ("replenishment_krs", "1", 1e-8, 1.2e-7, "SKF kinematic replenishment constant K_rs"),
+)
 
 
 #: ``affects`` of an effect that acts only in the spindle or rotor model.
@@ -60,7 +89,17 @@ _THERMAL_DEFAULTS = {
     "extra_heat_w": 0.0,
     "housing_conductance_scale": 1.0,
     "churning_oil_fraction": 0.0,
+    "axial_load_scale": 1.0,
+    "radial_load_scale": 1.0,
+    "heat_model": "palmgren",
+    "lubrication": None,
+    "sliding_friction_ehl": None,
+    "replenishment_krs": None,
 }
+
+#: Options of the bearing spec that are not thermal_state keywords: they
+#: scale the applied loads of the measured conditions.
+LOAD_SCALE_OPTIONS = ("axial_load_scale", "radial_load_scale")
 
 
 #: Effects that are switches and also have a calibratable coefficient:
@@ -76,8 +115,10 @@ _OFF_BY_DEFAULT = ("unbalanced_magnetic_pull",)
 def effect_registry(kind: Optional[str] = None) -> "polars.DataFrame":  # noqa: F821
     """The effects registry (``thermobear.effects()``): one row per physical
     effect. ``name``; ``kind``: "switch" (a named effect, on when listed in
-    ``effects=[...]``) or "term" (an input whose ``off`` value leaves the
-    term out, e.g. ``extra_heat_w`` = 0); ``models``: the models it acts in
+    ``effects=[...]``), "term" (an input whose ``off`` value leaves the
+    term out, e.g. ``extra_heat_w`` = 0) or "model" (an alternative model of
+    a term chosen by an option, e.g. ``heat_model:skf``,
+    docs/concepts/physics.md §9); ``models``: the models it acts in
     (comma-joined: bearing, spindle, rotor); ``parameter``, ``unit``,
     ``lower``, ``upper``: the calibratable input and its physical bounds
     ("on", 0-1 for a plain switch); ``default``: its value in the default
@@ -86,8 +127,8 @@ def effect_registry(kind: Optional[str] = None) -> "polars.DataFrame":  # noqa: 
 
     from .. import _native
 
-    if kind not in (None, "switch", "term"):
-        raise ConfigError(f"invalid kind = {kind!r}: None, 'switch' or 'term'")
+    if kind not in (None, "switch", "term", "model"):
+        raise ConfigError(f"invalid kind = {kind!r}: None, 'switch', 'term' or 'model'")
     rows = []
     for name, desc, models in _native.effects():
         on = 0.0 if name in _OFF_BY_DEFAULT else 1.0
@@ -103,6 +144,10 @@ def effect_registry(kind: Optional[str] = None) -> "polars.DataFrame":  # noqa: 
         if role == "effect":
             null = float(_THERMAL_DEFAULTS[opt])
             rows.append((name, "term", "bearing", opt, unit, lo, hi, null, null, desc))
+    for hm, desc in HEAT_MODELS.items():
+        if hm != _THERMAL_DEFAULTS["heat_model"]:
+            rows.append((f"heat_model:{hm}", "model", "bearing,spindle", "heat_model", "1", 0.0,
+                         1.0, 0.0, 0.0, desc))  # fmt: skip
     df = pl.DataFrame(
         rows,
         schema=["name", "kind", "models", "parameter", "unit", "lower", "upper", "default",

@@ -38,7 +38,9 @@ class _Setting:
                 return self
             opts[c.option] = c.name.split(":", 1)[1]
         else:
-            cur = float(opts.get(c.option, base_options[c.option]))
+            # a per-level option (load scale of one level) may be new to the
+            # baseline: its null value is the candidate's
+            cur = float(opts.get(c.option, base_options.get(c.option, c.null)))
             opts[c.option] = cur + value if c.offset else value
         return _Setting(self.effects, tuple(sorted(opts.items())), self.offsets)
 

@@ -18,8 +18,11 @@ Candidates: every effect the baseline leaves off as a switch, plus
 ``thermal_displacement`` (the five thermal-expansion effects together:
 seed B's "model with thermal displacement"), the spin friction coefficient,
 the preload kind (rigid <-> constant-force spring), the spring rate when the
-preload is a spring, the rotor's residual unbalance grade (G0.4-G6.3), and
-one sensor-offset decoy per measured quantity.
+preload is a spring, the rotor's residual unbalance grade (G0.4-G6.3), a
+preload scale (0.7-1.3, and one per preload level when the data have
+several), the shaft runout a non-contact vibration probe sees (0-50 um),
+the other heat model, and per measured quantity a sensor offset and (for
+absolute-sigma quantities) a sensor gain.
 """
 
 from __future__ import annotations
@@ -31,7 +34,13 @@ import numpy as np
 
 from ..errors import ConfigError, ThermobearError
 from ..spindle.spindle import Spindle, _state_row
-from .candidates import Candidate, sensor_offset_candidates
+from .candidates import (
+    Candidate,
+    heat_model_candidates,
+    load_level_candidates,
+    sensor_gain_candidates,
+    sensor_offset_candidates,
+)
 from .candidates import candidates as _candidate_table
 from .measurements import load_measurements
 from .protocol import ModelSpec
@@ -93,7 +102,28 @@ _SPRING_BOUNDS = (0.05, 3.0)
 #: coarsest grade the standard's table suggests for machine-tool parts and
 #: electric motors); a rotor outside this range is not a finished spindle.
 _UNBALANCE_BOUNDS = (0.4, 6.3)
-_OPTIONS = ("spin_friction", "preload_kind", "spring_rate_n_per_um", "unbalance_grade")
+#: Shaft runout seen by a non-contact vibration probe [um]: 0-50 um (a
+#: precision spindle nose runs within a few um; a tool-holder taper or a
+#: probe track on an unground shaft section reaches tens of um -- ISO 10791-1
+#: tolerances for spindle nose run-out are 3-10 um, 50 um is a generous
+#: upper end for a measuring track that is not the nose).
+RUNOUT_BOUNDS_UM = (0.0, 50.0)
+#: Preload scale: the preload set by spring length or spacers is off by a
+#: factor (same bounds as the bearing's load scales).
+PRELOAD_SCALE_BOUNDS = (0.7, 1.3)
+_OPTIONS = (
+    "spin_friction",
+    "preload_kind",
+    "spring_rate_n_per_um",
+    "unbalance_grade",
+    "preload_scale",
+    "runout_um",
+    "heat_model",
+    "lubrication",
+    "churning_oil_fraction",
+)
+#: Options that act only on the vibration quantity (not the thermal state).
+_VIBRATION_ONLY = ("unbalance_grade", "runout_um")
 
 
 class SpindleModelSpec(ModelSpec):
@@ -102,7 +132,11 @@ class SpindleModelSpec(ModelSpec):
     thermal-expansion effects; None = every effect) and options
     ``spin_friction`` (coefficient), ``preload_kind`` ("rigid" or "spring"),
     ``spring_rate_n_per_um`` and ``unbalance_grade`` (ISO 21940 grade of the
-    rotor, mm/s; default G2.5) -- each defaults to the spindle's own.
+    rotor, mm/s; default G2.5) -- each defaults to the spindle's own --,
+    ``preload_scale`` (the stated preload times this; per level
+    ``preload_scale@<N>``), ``runout_um`` (shaft runout seen by the
+    vibration probe, default 0), ``heat_model``, ``lubrication``,
+    ``churning_oil_fraction`` (docs/concepts/physics.md §9).
     Each configuration, preload and speed is solved once (cached, shared by
     the copies of :meth:`with_setting`)."""
 
@@ -119,9 +153,7 @@ class SpindleModelSpec(ModelSpec):
 
         if not isinstance(spindle, Spindle):
             raise ConfigError(f"invalid spindle = {spindle!r}: give a thermobear.Spindle")
-        for k in options:
-            if k not in _OPTIONS:
-                raise ConfigError(f"invalid option = {k!r}: known: {', '.join(_OPTIONS)}")
+        _check_option_names(options)
         self.spindle = spindle
         self._known = tuple(n for n, *_ in _native.effects())
         self.effects = self._expand(list(self._known) if effects is None else effects)
@@ -130,6 +162,11 @@ class SpindleModelSpec(ModelSpec):
             "preload_kind": spindle.preload_kind,
             "spring_rate_n_per_um": spindle.spring_rate_n_per_um,
             "unbalance_grade": 2.5,
+            "preload_scale": 1.0,
+            "runout_um": 0.0,
+            "heat_model": str(spindle.assumptions.get("heat_model", "palmgren")),
+            "lubrication": None,
+            "churning_oil_fraction": float(spindle.assumptions.get("churning_oil_fraction", 0.0)),
         }
         self.options = {**defaults, **options}
         _check_options(self.options)
@@ -155,10 +192,42 @@ class SpindleModelSpec(ModelSpec):
         new.spindle = self.spindle
         new._known = self._known
         new.effects = new._expand(list(self.effects) + list(add_effects))
+        _check_option_names(options)
         new.options = {**self.options, **options}
         _check_options(new.options)
         new._cache = self._cache
         return new
+
+    def effective_preload_n(self, preload_n: float) -> float:
+        """The preload the model applies for a stated ``preload_n`` [N]:
+        times ``preload_scale`` and the level's ``preload_scale@<N>``."""
+        o = self.options
+        level = float(o.get(f"preload_scale@{float(preload_n):g}", 1.0))
+        return float(preload_n) * float(o["preload_scale"]) * level
+
+    def _thermal_key(self) -> tuple:
+        """Options that change the thermal state (not the vibration-only
+        ones, not the preload scales: those enter as the effective preload)."""
+        return tuple(
+            sorted(
+                (k, str(v))
+                for k, v in self.options.items()
+                if k not in _VIBRATION_ONLY and not k.startswith("preload_scale")
+            )
+        )
+
+    def level_candidates(
+        self,
+        conditions: "polars.DataFrame",  # noqa: F821
+        min_levels: int = 2,
+    ) -> list[Candidate]:
+        """One preload-scale candidate per preload level of ``conditions``
+        (``min_levels`` or more levels)."""
+        col = "axial_n" if "axial_n" in conditions.columns else "preload_n"
+        levels = conditions[col].to_list()
+        return load_level_candidates(
+            "preload_scale", levels, tuple(SPINDLE_QUANTITIES), "preload", min_levels
+        )
 
     @property
     def coupled(self) -> bool:
@@ -167,21 +236,24 @@ class SpindleModelSpec(ModelSpec):
         return bool(set(self.effects) & set(THERMAL_DISPLACEMENT_EFFECTS))
 
     def configured(self, preload_n: float) -> Spindle:
-        """The :class:`~thermobear.Spindle` of this configuration at a preload."""
+        """The :class:`~thermobear.Spindle` of this configuration at a
+        stated preload (scaled by :meth:`effective_preload_n`)."""
         o = self.options
         spring = o["preload_kind"] == "spring"
         return self.spindle.with_options(
-            preload_n=float(preload_n),
+            preload_n=self.effective_preload_n(preload_n),
             preload_kind=o["preload_kind"],
             spring_rate_n_per_um=float(o["spring_rate_n_per_um"]) if spring else None,
             effects=list(self.effects),
             spin_friction=float(o["spin_friction"]),
+            heat_model=str(o["heat_model"]),
+            lubrication=o["lubrication"],
+            churning_oil_fraction=float(o["churning_oil_fraction"]),
         )
 
     def _state(self, preload_n: float, speed_rpm: float) -> dict:
-        # the rotor's unbalance does not enter the thermal model
-        opts = tuple(sorted((k, str(v)) for k, v in self.options.items() if k != "unbalance_grade"))
-        key = ("state", self.effects, opts, preload_n, speed_rpm)
+        key = ("state", self.effects, self._thermal_key(), self.effective_preload_n(preload_n),
+               speed_rpm)  # fmt: skip
         if key not in self._cache:
             sp = self.configured(preload_n)
             try:
@@ -202,7 +274,9 @@ class SpindleModelSpec(ModelSpec):
     def _vibration(self, preload_n: float, speeds: np.ndarray) -> np.ndarray:
         from ..rotor import vibration
 
-        key = ("vibration", self._key(), preload_n, tuple(speeds.tolist()))
+        ub = float(self.options["unbalance_grade"])
+        key = ("vibration", self.effects, self._thermal_key(), ub,
+               self.effective_preload_n(preload_n), tuple(speeds.tolist()))  # fmt: skip
         if key not in self._cache:
             rotor = _RotorView(self, preload_n)
             try:
@@ -255,10 +329,25 @@ class SpindleModelSpec(ModelSpec):
             speeds = np.unique(sp[rows])
             v = self._vibration(p, speeds)
             y[rows] = v[np.searchsorted(speeds, sp[rows])]
-        return y
+        return runout_velocity_rms_mm_s(y, sp, float(self.options["runout_um"]))
 
     def __repr__(self) -> str:
         return f"SpindleModelSpec({self.spindle!r}, effects={list(self.effects)})"
+
+
+def runout_velocity_rms_mm_s(velocity_rms_mm_s: Any, speed_rpm: Any, runout_um: float) -> Any:
+    """The velocity RMS a non-contact probe reads [mm/s] when the shaft
+    track it looks at runs out by ``runout_um`` (peak, um): the track's
+    once-per-revolution motion eps sin(omega t) reads as a 1X velocity of
+    amplitude omega eps (RMS omega eps / sqrt 2), added to the vibration
+    in quadrature (its phase to the unbalance response is not known; the
+    expected power of two 1X components of unrelated phase is the sum)."""
+    v = np.asarray(velocity_rms_mm_s, dtype=float)
+    if runout_um == 0.0:
+        return v
+    omega = 2.0 * np.pi * np.asarray(speed_rpm, dtype=float) / 60.0
+    r = omega * runout_um * 1e-3 / np.sqrt(2.0)  # um * rad/s -> mm/s
+    return np.sqrt(v * v + r * r)
 
 
 class _Predictions(dict):
@@ -295,6 +384,13 @@ def _default_spin_friction(spindle: Spindle) -> float:
     raise ConfigError(f"invalid spindle = {spindle!r}: no spin friction coefficient in assumptions")
 
 
+def _check_option_names(options: dict) -> None:
+    for k in options:
+        if k in _OPTIONS or k.split("@", 1)[0] == "preload_scale" and "@" in k:
+            continue
+        raise ConfigError(f"invalid option = {k!r}: known: {', '.join(_OPTIONS)}")
+
+
 def _check_options(o: dict) -> None:
     mu = o["spin_friction"]
     if not (isinstance(mu, (int, float)) and np.isfinite(mu) and mu >= 0.0):
@@ -307,6 +403,9 @@ def _check_options(o: dict) -> None:
     g = o["unbalance_grade"]
     if not (np.isfinite(g) and g > 0):
         raise ConfigError(f"invalid unbalance_grade = {g!r}: a grade > 0 mm/s")
+    e = o["runout_um"]
+    if not (np.isfinite(e) and e >= 0):
+        raise ConfigError(f"invalid runout_um = {e!r}: a runout >= 0 um")
 
 
 # --------------------------------------------------------------------------
@@ -326,8 +425,28 @@ def _spindle_candidate_list(model: Optional[SpindleModelSpec], quantities: Seque
     out += _spin_friction_candidates(opts, allq)
     out += _preload_candidates(opts, allq)
     out += _unbalance_candidates(opts)
+    out += _preload_scale_and_runout_candidates(opts, allq)
+    out += heat_model_candidates(opts, allq, skf_inputs=False)
     out += sensor_offset_candidates(quantities, SPINDLE_QUANTITIES)
+    out += sensor_gain_candidates(quantities, SPINDLE_QUANTITIES)
     return out
+
+
+def _preload_scale_and_runout_candidates(opts: dict, allq: tuple) -> list[Candidate]:
+    """The preload set off by a factor (a baseline input) and the shaft
+    runout a non-contact vibration probe sees (measurement side; it acts
+    through the model's vibration, so it is a model option)."""
+    scale = _calibrated_input(
+        "preload_scale", "preload_scale", "1", opts["preload_scale"], PRELOAD_SCALE_BOUNDS,
+        "preload differs from the stated one by a factor", allq,
+    )  # fmt: skip
+    runout = Candidate(
+        "runout_um", "parameter", "model", "runout_um", "um", RUNOUT_BOUNDS_UM[0],
+        max(RUNOUT_BOUNDS_UM[1], float(opts["runout_um"])), float(opts["runout_um"]),
+        "shaft runout seen by the non-contact vibration probe: 1X velocity omega x runout",
+        (_VIB,), option="runout_um", role="measurement",
+    )  # fmt: skip
+    return [scale, runout]
 
 
 def _switch_candidates(base: set, allq: tuple) -> list[Candidate]:

@@ -7,12 +7,17 @@
   reduced to the relative mesh coordinate, 7 DOF) with the computed mesh
   stiffness (normal direction, ``k_t / cos^2(beta)``) and the bearings'
   support stiffness against speed (``"constant"``, ``"speed"``,
-  ``"thermal"`` or a user frame). Two bearings per shaft act in parallel.
+  ``"thermal"``: one bearing's, times ``bearings_per_shaft`` = 2 in
+  parallel; or a user frame ``bearing_stiffness_per="bearing"`` or
+  ``"shaft"``). Mesh stiffness and transmission error may be given as
+  tables or callables (:mod:`thermobear.gear.tables`); negative torque is
+  coast.
 * :func:`bifurcation`, :func:`bifurcation_set`, :func:`regimes`,
   :func:`regime_map`, :func:`largest_lyapunov`.
 
 Every value the seed omits has a documented default (:func:`gear_defaults`):
-total backlash 100 um (half backlash b = 50 um), mesh damping ratio 0.07
+half backlash b = 50 um (``half_backlash_um``; total clearance
+``backlash_total_um`` = 100 um), mesh damping ratio 0.07
 acting only while the teeth touch (A-46 as printed; ``mesh_damping="always"``
 for the docs/concepts/physics.md §7 form), bearing damping ratio 0.02, first-harmonic
 transmission error 2 um.

@@ -143,7 +143,8 @@ def gear_defaults() -> "polars.DataFrame":  # noqa: F821
 
     d = _native.gear_defaults()
     rows = [
-        ("backlash_um", 2.0 * d["half_backlash_um"], "total clearance 2b; b = 50 um (not in A)"),
+        ("half_backlash_um", d["half_backlash_um"], "half backlash b (not in A)"),
+        ("backlash_total_um", 2.0 * d["half_backlash_um"], "total clearance 2b (not in A)"),
         ("mesh_damping_ratio", d["mesh_damping_ratio"], "usual 0.03-0.17 range (not in A)"),
         ("mesh_damping", None, "in-contact only (A-46 as printed); 'always' offered"),
         ("bearing_damping_ratio", d["bearing_damping_ratio"], "on body mass (not in A)"),

@@ -3,42 +3,59 @@ matrices, the bearing stiffness schedule against speed."""
 
 from __future__ import annotations
 
+import math
 from typing import Any, Optional, Sequence, Union
 
 import numpy as np
 
 from .. import _native
 from .pair import STIFFNESS_SPEEDS_RPM, GearPair, _config_error
-
-
-def _schedule_from_frame(df: Any, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    for col in ("speed_rpm", "radial_stiffness_n_per_m", "axial_stiffness_n_per_m"):
-        if col not in getattr(df, "columns", ()):
-            raise _config_error(
-                f"invalid stiffness = frame without {col!r}: need speed_rpm, "
-                "radial_stiffness_n_per_m, axial_stiffness_n_per_m (per bearing)"
-            )
-    s = np.asarray(df["speed_rpm"], dtype=float)
-    order = np.argsort(s, kind="stable")
-    kr = np.asarray(df["radial_stiffness_n_per_m"], dtype=float)[order] * n
-    ka = np.asarray(df["axial_stiffness_n_per_m"], dtype=float)[order] * n
-    return s[order], kr, ka
+from .tables import (
+    MeshInput,
+    backlash_half_um,
+    bearing_count,
+    mesh_period_samples,
+    support_from_frame,
+)
 
 
 class GearSystem:
     """The 8-DOF helical pair on its bearings.
 
-    ``stiffness``: ``"constant"`` (zero-speed stiffness of ``bearings`` under
-    the seed loads), ``"speed"`` (quasi-static stiffness at each speed, no
-    thermal effects), ``"thermal"`` (from ``stiffness_curve(mode="thermal")``
-    when the bearing module offers it) or a frame with ``speed_rpm``,
-    ``radial_stiffness_n_per_m``, ``axial_stiffness_n_per_m`` of ONE bearing.
-    Each shaft carries ``bearings_per_shaft`` (default 2) identical bearings
-    in parallel: support stiffness = n x one bearing's (A-52, ``diag(Kr, Kr,
-    Ka)`` for pinion and gear). Bearing loads follow the torque: Fa = 2380.9
-    T/100 + 300 N preload, Fr = 1189.9 T/100 N (seed A section 2.3).
+    Bearing support (A-52, ``diag(Kr, Kr, Ka)`` for pinion and gear):
+    ``stiffness`` is ``"constant"`` (zero-speed stiffness of ``bearings``
+    under the seed loads), ``"speed"`` (quasi-static stiffness at each
+    speed, no thermal effects), ``"thermal"`` (``stiffness_curve(mode=
+    "thermal")``) or a frame with ``speed_rpm`` and the radial/axial
+    stiffness [N/m]. The three computed cases give ONE bearing's stiffness;
+    each shaft carries ``bearings_per_shaft`` (default 2, seed A Fig. 1)
+    identical bearings in parallel, so the support is n x one bearing's. A
+    frame must say what it holds: ``bearing_stiffness_per="bearing"``
+    (``radial_stiffness_n_per_m``, ``axial_stiffness_n_per_m`` of one
+    bearing, multiplied by ``bearings_per_shaft``) or ``"shaft"`` (the
+    whole support of one shaft, used as given; ``bearings_per_shaft`` must
+    then be left out). A frame with ``support_radial_stiffness_n_per_m``,
+    ``support_axial_stiffness_n_per_m`` (as :attr:`stiffness_schedule`
+    returns) is per shaft. Bearing loads follow |torque|: Fa = 2380.9
+    |T|/100 + 300 N preload, Fr = 1189.9 |T|/100 N (seed A section 2.3).
 
-    ``backlash_um`` is the total clearance 2b. ``mesh_damping``:
+    Backlash by name, at most one: ``half_backlash_um`` (b) or
+    ``backlash_total_um`` (the total clearance 2b); default b = 50 um.
+    ``backlash_um`` is a deprecated alias of ``backlash_total_um``
+    (DeprecationWarning).
+
+    Mesh inputs (see :mod:`thermobear.gear.tables` for the table format):
+    ``mesh_stiffness_n_per_m`` (table with ``normal_stiffness_n_per_m`` or
+    ``transverse_stiffness_n_per_m``, or a callable of ``mesh_phase``
+    returning N/m along the normal deflection) replaces the computed
+    ``mesh_model`` (``"potential-energy"`` default, or ``"iso"``);
+    ``transmission_error_um`` (table with ``transmission_error_um`` or
+    ``transmission_error_m``, or a callable returning um) replaces the
+    first-harmonic TE of ``te_amplitude_um`` (default 2 um). Either is
+    sampled once; the model interpolates the samples.
+
+    ``torque_nm``: input torque on the pinion (default the pair's); negative
+    is coast (the back flanks carry the load). ``mesh_damping``:
     ``"in-contact"`` (A-46 as printed, default) or ``"always"``.
     """
 
@@ -48,81 +65,127 @@ class GearSystem:
         bearings: Any = None,
         stiffness: Union[str, Any] = "constant",
         *,
-        bearings_per_shaft: int = 2,
-        backlash_um: float = 100.0,
+        bearing_stiffness_per: Optional[str] = None,
+        bearings_per_shaft: Optional[int] = None,
+        half_backlash_um: Optional[float] = None,
+        backlash_total_um: Optional[float] = None,
+        backlash_um: Optional[float] = None,
         mesh_damping_ratio: float = 0.07,
         mesh_damping: str = "in-contact",
         bearing_damping_ratio: float = 0.02,
-        te_amplitude_um: float = 2.0,
+        te_amplitude_um: Optional[float] = None,
         torque_nm: Optional[float] = None,
-        mesh_model: str = "potential-energy",
+        mesh_model: Optional[str] = None,
         table_points: int = 64,
         stiffness_speeds_rpm: Optional[Sequence[float]] = None,
+        mesh_stiffness_n_per_m: Optional[MeshInput] = None,
+        transmission_error_um: Optional[MeshInput] = None,
     ) -> None:
         from ..bearing import Bearing
-        from ..thermal import stiffness_curve
 
         if not isinstance(gear, GearPair):
             raise _config_error(f"invalid gear = {gear!r}: must be a thermobear.GearPair")
-        if isinstance(bearings_per_shaft, bool) or int(bearings_per_shaft) < 1:
-            raise _config_error(f"invalid bearings_per_shaft = {bearings_per_shaft!r}: at least 1")
-        n = int(bearings_per_shaft)
+        half_um = backlash_half_um(half_backlash_um, backlash_total_um, backlash_um, 50.0)
         bearing = Bearing.preset("6208") if bearings is None else bearings
         torque = float(gear.geometry["input_torque_nm"] if torque_nm is None else torque_nm)
         fa, fr = _native.seed_gear_bearing_loads(torque)
-        grid = np.asarray(
-            STIFFNESS_SPEEDS_RPM if stiffness_speeds_rpm is None else stiffness_speeds_rpm,
-            dtype=float,
-        )
-        if isinstance(stiffness, str):
-            if stiffness in ("constant", "speed"):
-                s, kr, ka = _native.gear_bearing_schedule(
-                    bearing._b, stiffness, list(grid), fa, fr, n
-                )
-            elif stiffness == "thermal":
-                try:
-                    df = stiffness_curve(
-                        bearing, grid, axial_n=fa, radial_n=fr, mode="thermal", misalignment_rad=0.0
-                    )
-                except Exception as e:  # the mode is added by the thermal module
-                    raise _config_error(
-                        "invalid stiffness = 'thermal': stiffness_curve(mode='thermal') is not "
-                        f"available here ({e}); pass a frame with speed_rpm, "
-                        "radial_stiffness_n_per_m, axial_stiffness_n_per_m instead"
-                    ) from e
-                s, kr, ka = _schedule_from_frame(df, n)
-            else:
-                raise _config_error(
-                    f"invalid stiffness = {stiffness!r}: must be 'constant', 'speed', 'thermal' "
-                    "or a frame"
-                )
-            self.stiffness_case = stiffness
-        else:
-            s, kr, ka = _schedule_from_frame(stiffness, n)
-            self.stiffness_case = "user"
+        s, kr, ka = self._support(
+            bearing, stiffness, bearing_stiffness_per, bearings_per_shaft, stiffness_speeds_rpm,
+            (fa, fr),
+        )  # fmt: skip
+        points = int(table_points)
         self.gear = gear
         self.bearing = bearing
-        self.bearings_per_shaft = n
+        self.bearings_per_shaft = (
+            None if bearing_stiffness_per == "shaft" else (bearing_count(bearings_per_shaft))
+        )
+        self.bearing_stiffness_per = "shaft" if bearing_stiffness_per == "shaft" else "bearing"
         self.bearing_loads_n = {"axial_n": fa, "radial_n": fr}
         self._s = _native.GearSystem(
             gear._g,
             [float(v) for v in s],
             [float(v) for v in kr],
             [float(v) for v in ka],
-            half_backlash_um=0.5 * float(backlash_um),
+            half_backlash_um=half_um,
             mesh_damping_ratio=float(mesh_damping_ratio),
             mesh_damping=mesh_damping,
             bearing_damping_ratio=float(bearing_damping_ratio),
-            te_amplitude_um=float(te_amplitude_um),
+            te_amplitude_um=None if te_amplitude_um is None else float(te_amplitude_um),
             torque_nm=torque,
-            table_points=int(table_points),
+            table_points=points,
             mesh_model=mesh_model,
+            mesh_stiffness_n_per_m=self._stiffness_table(gear, mesh_stiffness_n_per_m, points),
+            transmission_error_m=self._te_table(gear, transmission_error_um, points),
         )
+
+    @staticmethod
+    def _stiffness_table(gear: GearPair, given: Any, points: int) -> Optional[list[float]]:
+        if given is None:
+            return None
+        cb = math.cos(math.radians(gear.geometry["helix_angle_deg"]))
+        cols = {"normal_stiffness_n_per_m": 1.0, "transverse_stiffness_n_per_m": 1.0 / (cb * cb)}
+        z = int(gear.geometry["pinion_teeth"])
+        v = mesh_period_samples("mesh_stiffness_n_per_m", cols, 1.0, given, z, points)
+        return [float(x) for x in v]
+
+    @staticmethod
+    def _te_table(gear: GearPair, given: Any, points: int) -> Optional[list[float]]:
+        if given is None:
+            return None
+        cols = {"transmission_error_m": 1.0, "transmission_error_um": 1e-6}
+        z = int(gear.geometry["pinion_teeth"])
+        v = mesh_period_samples("transmission_error_um", cols, 1e-6, given, z, points)
+        return [float(x) for x in v]
+
+    def _support(
+        self,
+        bearing: Any,
+        stiffness: Any,
+        per: Optional[str],
+        bearings_per_shaft: Optional[int],
+        speeds: Optional[Sequence[float]],
+        loads: tuple[float, float],
+    ) -> tuple[Any, Any, Any]:
+        """Support stiffness schedule of one shaft (speed, kr, ka)."""
+        from ..thermal import stiffness_curve
+
+        if not isinstance(stiffness, str):
+            self.stiffness_case = "user"
+            return support_from_frame(stiffness, per, bearings_per_shaft)
+        if stiffness not in ("constant", "speed", "thermal"):
+            raise _config_error(
+                f"invalid stiffness = {stiffness!r}: must be 'constant', 'speed', 'thermal' "
+                "or a frame"
+            )
+        if per not in (None, "bearing"):
+            raise _config_error(
+                f"invalid bearing_stiffness_per = {per!r}: stiffness={stiffness!r} is computed "
+                "for one bearing ('bearing'); 'shaft' applies to a frame only"
+            )
+        n = bearing_count(bearings_per_shaft)
+        fa, fr = loads
+        grid = np.asarray(STIFFNESS_SPEEDS_RPM if speeds is None else speeds, dtype=float)
+        self.stiffness_case = stiffness
+        if stiffness != "thermal":
+            return _native.gear_bearing_schedule(bearing._b, stiffness, list(grid), fa, fr, n)
+        try:
+            df = stiffness_curve(
+                bearing, grid, axial_n=fa, radial_n=fr, mode="thermal", misalignment_rad=0.0
+            )
+        except Exception as e:  # the mode is added by the thermal module
+            raise _config_error(
+                "invalid stiffness = 'thermal': stiffness_curve(mode='thermal') is not "
+                f"available here ({e}); pass a frame with speed_rpm, "
+                "radial_stiffness_n_per_m, axial_stiffness_n_per_m instead"
+            ) from e
+        return support_from_frame(df, "bearing", n)
 
     @property
     def params(self) -> dict[str, float]:
         """Model numbers (mesh stiffness mean/min/max in N/m, normal
-        direction; mesh damping N s/m; masses, radii, angles)."""
+        direction; mesh damping N s/m; masses, radii, angles; torque in N m,
+        negative for coast; ``te_amplitude_um``: the first-harmonic
+        amplitude, or half the peak-to-peak of a TE table)."""
         return dict(self._s.params())
 
     @property
@@ -170,17 +233,32 @@ class GearSystem:
         )
         return np.asarray(self._s.natural_frequencies_hz(float(speed_rpm), float(k)))
 
+    def static_state_m(self, speed_rpm: float = 10_000.0) -> np.ndarray:
+        """Static equilibrium q = [x_p, y_p, z_p, x_g, y_g, z_g, u] [m] in
+        contact at the mean mesh stiffness and TE (back flank for coast)."""
+        return np.asarray(self._s.static_state_m(float(speed_rpm)))
+
     def projection(self) -> np.ndarray:
         """Mesh-normal projection vector a of q (A-45)."""
         return np.asarray(self._s.projection())
 
     def mesh_tables(self) -> "polars.DataFrame":  # noqa: F821
-        """k_m (normal) and the static TE the model uses over one mesh period."""
+        """The mesh stiffness along the normal deflection and the static TE
+        the model uses over one mesh period: ``mesh_phase`` (i / n),
+        ``normal_stiffness_n_per_m``, ``transmission_error_um``,
+        ``transmission_error_m``. Given back as ``mesh_stiffness_n_per_m=`` /
+        ``transmission_error_um=`` it rebuilds the same model bit for bit."""
         import polars as pl
 
         return pl.DataFrame({k: np.asarray(v) for k, v in self._s.mesh_tables().items()})
 
+    @property
+    def mesh_model(self) -> str:
+        """``"potential-energy"``, ``"iso"`` or ``"table"`` (user table)."""
+        return str(self._s.mesh_model)
+
     def mesh_period_s(self, speed_rpm: float) -> float:
+        """Mesh period 60 / (z_p n) [s]."""
         return float(self._s.mesh_period_s(float(speed_rpm)))
 
     def check_steps(self, speed_rpm: float, steps_per_period: int) -> None:

@@ -17,21 +17,23 @@ def bifurcation(
     s: float = 0.3,
     color: Optional[str] = None,
     label: Optional[str] = None,
+    unsettled_color: Optional[str] = "tab:orange",
 ) -> Any:
     """Bifurcation diagram: Poincare samples of ``y`` (default the dynamic
     transmission error in um) against ``speed_rpm``, one dot per sample, from
-    :func:`thermobear.bifurcation`."""
+    :func:`thermobear.bifurcation`. Speeds whose transient did not settle
+    (``settled`` False: provisional labels) are drawn in ``unsettled_color``
+    (``None``: like the others)."""
     ax = get_axes(ax)
     col = y if y in pts.columns else ("dte" if "dte" in pts.columns else y)
-    ax.scatter(
-        pts["speed_rpm"].to_numpy(),
-        pts[col].to_numpy(),
-        s=s,
-        c=color or "k",
-        marker=".",
-        linewidths=0,
-        label=label,
-    )
+    x, v = pts["speed_rpm"].to_numpy(), pts[col].to_numpy()
+    odd = np.zeros(len(x), dtype=bool)
+    if unsettled_color is not None and "settled" in pts.columns:
+        odd = ~pts["settled"].to_numpy().astype(bool)
+    kw = dict(s=s, marker=".", linewidths=0)
+    ax.scatter(x[~odd], v[~odd], c=color or "k", label=label, **kw)
+    if odd.any():
+        ax.scatter(x[odd], v[odd], c=unsettled_color, label="not settled", **kw)
     ax.set_xlabel("speed [rpm]")
     ax.set_ylabel(col.replace("_um", " [µm]").replace("_", " "))
     ax.grid(True, alpha=0.3)

@@ -23,6 +23,7 @@ The vibration is the x velocity of the tool nose (shaft end). Amplitudes of
 1X/2X/3X and of the spectrum are single-sided peak amplitudes [mm/s].
 """
 
+from .displacement import displacement_vibration, orbit_velocity_mm_s
 from .modes import campbell, critical_speeds
 from .response import spectrum, spectrum_orders, vibration
 from .supports import SPINDLE_PRESETS
@@ -31,6 +32,8 @@ __all__ = [
     "SPINDLE_PRESETS",
     "campbell",
     "critical_speeds",
+    "displacement_vibration",
+    "orbit_velocity_mm_s",
     "spectrum",
     "spectrum_orders",
     "vibration",

@@ -8,6 +8,7 @@ from typing import Any, Callable, Optional, Sequence
 import numpy as np
 
 from .. import _native
+from ..errors import ConfigError
 from .supports import _effects, _offsets, _resolve, _speeds
 
 
@@ -22,11 +23,19 @@ def vibration(
     duration_s: float = 0.1,
     effects: Optional[Sequence[str]] = None,
     progress: Optional[Callable[[int, int], None]] = None,
+    model: str = "rotor",
 ) -> "polars.DataFrame":  # noqa: F821
     """Shaft-end (tool nose) vibration velocity against speed under a
     residual unbalance at the rotor core: ISO 21940 grade
     ``unbalance_grade`` [mm/s] at 30,000 rpm (default G2.5), or
     ``unbalance_g_mm`` [g mm].
+
+    ``model="seed-b"``: seed B's own model instead of the rotor's forced
+    response -- the velocity omega x (bearing radial displacement + radial
+    thermal displacement) of :func:`thermobear.rotor.displacement_vibration`
+    (its assumptions are listed there); ``spindle`` must then be a
+    :class:`thermobear.Spindle` or a preset name, and the unbalance,
+    ``method`` and ``effects`` arguments do not apply.
 
     ``method="frequency"``: steady unbalance response with the linearised
     rows (only 1X; RMS = 1X / sqrt 2). ``method="time"``: time response of
@@ -40,6 +49,14 @@ def vibration(
     """
     import polars as pl
 
+    if model == "seed-b":
+        from .displacement import displacement_vibration
+
+        return displacement_vibration(spindle, speeds_rpm, coupled).with_columns(
+            pl.lit(bool(coupled)).alias("coupled")
+        )
+    if model != "rotor":
+        raise ConfigError(f"invalid model = {model!r}: 'rotor' or 'seed-b'")
     mat, preload, _ = _resolve(spindle)
     s = _speeds(speeds_rpm, np.linspace(3_000.0, 30_000.0, 10))
     d = _native.rotor_vibration(

@@ -39,10 +39,19 @@ class Spindle:
         radial_load_n: Optional[float] = None,
         effects: Optional[Sequence[str]] = None,
         spin_friction: Optional[float] = None,
+        **heat: Any,
     ) -> "Spindle":
         """A copy with other settings; ``preload_kind`` is ``"rigid"`` or
         ``"spring"`` (a spring keeps ``spring_rate_n_per_um``, default seed
-        B's 0.36 N/um)."""
+        B's 0.36 N/um). Heat-model keywords (docs/concepts/physics.md §9;
+        None keeps the current value): ``heat_model`` ("palmgren" or "skf"),
+        ``lubrication`` ("grease", "oil-air", "oil-mist", "jet", "oil-bath":
+        its defaults fill ``lubrication_factor_f0`` and
+        ``churning_oil_fraction`` when they are not given),
+        ``lubrication_factor_f0``, ``churning_oil_fraction`` (ball-drag oil
+        volume fraction, 0..1), ``skf_series``, ``sliding_friction_ehl``,
+        ``replenishment_krs``, ``seal_moment_nmm`` (as for
+        :func:`thermobear.thermal_state`)."""
         return Spindle(
             self._native.with_options(
                 preload_n=preload_n,
@@ -51,6 +60,7 @@ class Spindle:
                 radial_load_n=radial_load_n,
                 effects=list(effects) if effects is not None else None,
                 spin_friction=spin_friction,
+                heat=_heat_args(heat),
             )
         )
 
@@ -115,18 +125,20 @@ class Spindle:
                 f"invalid axial_n = {axial_n}: a spindle's axial load is its preload; "
                 "give preload_n"
             )
+        heat = {k: unused.pop(k) for k in list(unused) if k in SPINDLE_HEAT_OPTIONS}
         if unused:
             raise ConfigError(
                 f"invalid argument = {sorted(unused)[0]}: a spindle takes speed_rpm, "
-                "preload_n, radial_n, preload_kind, effects"
+                "preload_n, radial_n, preload_kind, effects and the heat-model options"
             )
         sp = self
-        if any(v is not None for v in (preload_n, radial_n, preload_kind, effects)):
+        if any(v is not None for v in (preload_n, radial_n, preload_kind, effects, *heat.values())):
             sp = self.with_options(
                 preload_n=preload_n,
                 radial_load_n=radial_n,
                 preload_kind=preload_kind,
                 effects=effects,
+                **heat,
             )
         d = sp._native.steady_state(float(speed_rpm))
         return pl.DataFrame([_state_row(d, sp)])
@@ -167,6 +179,37 @@ class Spindle:
         return pl.DataFrame([row])
 
 
+#: Heat-model keywords of :meth:`Spindle.with_options`.
+SPINDLE_HEAT_OPTIONS = (
+    "heat_model",
+    "lubrication",
+    "lubrication_factor_f0",
+    "churning_oil_fraction",
+    "skf_series",
+    "sliding_friction_ehl",
+    "replenishment_krs",
+    "seal_moment_nmm",
+)
+
+
+def _heat_args(heat: dict) -> Optional[dict]:
+    """The heat keywords as the native dict (None: nothing given)."""
+    from ..errors import ConfigError
+
+    for k in heat:
+        if k not in SPINDLE_HEAT_OPTIONS:
+            raise ConfigError(f"invalid argument = {k!r}: known: {', '.join(SPINDLE_HEAT_OPTIONS)}")
+    if all(v is None for v in heat.values()):
+        return None
+    out = {k: heat.get(k) for k in SPINDLE_HEAT_OPTIONS}
+    for k in ("lubrication_factor_f0", "churning_oil_fraction", "sliding_friction_ehl",
+              "replenishment_krs", "seal_moment_nmm"):  # fmt: skip
+        out[k] = None if out[k] is None else float(out[k])
+    for k in ("heat_model", "lubrication", "skf_series"):
+        out[k] = None if out[k] is None else str(out[k])
+    return out
+
+
 def _pair_row(p: dict) -> dict:
     k = np.asarray(p["stiffness_matrix"])
     return {
@@ -195,6 +238,7 @@ def _state_row(d: dict, sp: Spindle) -> dict:
     row["front_bearing_heat_w"] = d["bearing_heat_w"][0]
     row["front_spin_heat_w"] = d["spin_heat_w"][0]
     row["bearing_heat_w"] = float(sum(d["bearing_heat_w"]))
+    row["bearing_drag_heat_w"] = float(sum(d["drag_heat_w"]))
     row["motor_losses_w"] = d["motor_losses_w"]
     row["magnetic_pull_n"] = d["magnetic_pull_n"]
     for pair in ("front", "rear"):

@@ -3,12 +3,20 @@ thermo-mechanical state; stiffness against speed under the constant, speed
 and thermal models (crate: ``src/thermal``, bindings
 ``src/python/thermal.rs``)."""
 
-from .state import THERMAL_EFFECTS, ThermalState, thermal_state
+from .state import (
+    HEAT_MODEL_OPTIONS,
+    THERMAL_EFFECTS,
+    ThermalState,
+    lubrication_defaults,
+    thermal_state,
+)
 from .stiffness import stiffness_curve, thermal_stiffness_curve
 
 __all__ = [
+    "HEAT_MODEL_OPTIONS",
     "THERMAL_EFFECTS",
     "ThermalState",
+    "lubrication_defaults",
     "stiffness_curve",
     "thermal_state",
     "thermal_stiffness_curve",

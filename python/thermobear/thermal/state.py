@@ -22,6 +22,7 @@ import numpy as np
 from .. import _native
 from ..bearing.ball_bearing import Bearing, BearingSolution, _effects_arg
 from ..bearing.material import _native_material
+from ..errors import ConfigError
 
 #: Effects that make the coupled model differ from the isothermal one.
 THERMAL_EFFECTS = (
@@ -136,9 +137,34 @@ class ThermalState:
         )
 
 
+#: Keyword options of the heat model (docs/concepts/physics.md §9) and
+#: their defaults: ``heat_model`` "palmgren" (the seeds') or "skf" (four-term
+#: SKF-style moment); ``lubrication`` None (the seeds' oil-air with f0 = 1
+#: and no ball drag) or "grease", "oil-air", "oil-mist", "jet", "oil-bath"
+#: (its defaults then fill ``lubrication_factor_f0`` and
+#: ``churning_oil_fraction`` when not given; :func:`lubrication_defaults`);
+#: SKF model: ``skf_series`` ("60", "62", "63", "64", "72B", "73B"; None: 62
+#: deep-groove, 72B angular-contact), ``sliding_friction_ehl`` (mu_EHL; None:
+#: 0.1 for a transmission fluid such as "e-drive ATF", else 0.05),
+#: ``replenishment_krs`` (None: from the lubrication method),
+#: ``seal_moment_nmm`` (N mm, 0 = open bearing).
+HEAT_MODEL_OPTIONS = {
+    "heat_model": "palmgren",
+    "lubrication": None,
+    "skf_series": None,
+    "sliding_friction_ehl": None,
+    "replenishment_krs": None,
+    "seal_moment_nmm": 0.0,
+}
+
+
+def _opt_float(v: Any) -> Optional[float]:
+    return None if v is None else float(v)
+
+
 def _model_kwargs(
     lubricant: str,
-    lubrication_factor_f0: float,
+    lubrication_factor_f0: Optional[float],
     spin_friction: float,
     oil_air_temperature_c: float,
     ambient_temperature_c: float,
@@ -147,11 +173,16 @@ def _model_kwargs(
     misalignment_rad: Optional[float],
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
-    churning_oil_fraction: float = 0.0,
+    churning_oil_fraction: Optional[float] = None,
+    **heat: Any,
 ) -> dict:
+    for k in heat:
+        if k not in HEAT_MODEL_OPTIONS:
+            raise ConfigError(f"invalid argument = {k!r}: not a thermal or heat-model option")
+    h = {**HEAT_MODEL_OPTIONS, **heat}
     return {
         "lubricant": str(lubricant),
-        "lubrication_factor_f0": float(lubrication_factor_f0),
+        "lubrication_factor_f0": _opt_float(lubrication_factor_f0),
         "spin_friction": float(spin_friction),
         "oil_air_temperature_c": float(oil_air_temperature_c),
         "ambient_temperature_c": float(ambient_temperature_c),
@@ -160,8 +191,24 @@ def _model_kwargs(
         "misalignment_rad": None if misalignment_rad is None else float(misalignment_rad),
         "extra_heat_w": float(extra_heat_w),
         "housing_conductance_scale": float(housing_conductance_scale),
-        "churning_oil_fraction": float(churning_oil_fraction),
+        "churning_oil_fraction": _opt_float(churning_oil_fraction),
+        "heat_model": str(h["heat_model"]),
+        "lubrication": None if h["lubrication"] is None else str(h["lubrication"]),
+        "skf_series": None if h["skf_series"] is None else str(h["skf_series"]),
+        "sliding_friction_ehl": _opt_float(h["sliding_friction_ehl"]),
+        "replenishment_krs": _opt_float(h["replenishment_krs"]),
+        "seal_moment_nmm": float(h["seal_moment_nmm"]),
     }
+
+
+def lubrication_defaults(lubrication: str, bearing_type: str = "angular_contact") -> dict:
+    """What a lubrication method sets (docs/concepts/physics.md §9) for a
+    ``bearing_type`` ("deep_groove" or "angular_contact"): the Palmgren
+    factor ``lubrication_factor_f0`` and its ``f0_bounds`` (Harris &
+    Kotzalas' table), the ball-drag oil volume fraction
+    ``oil_volume_fraction`` and its ``oil_fraction_bounds`` (dimensionless),
+    the SKF ``replenishment_krs``."""
+    return dict(_native.lubrication_defaults(str(lubrication), str(bearing_type).replace("-", "_")))
 
 
 def thermal_state(
@@ -172,7 +219,7 @@ def thermal_state(
     *,
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
-    lubrication_factor_f0: float = 1.0,
+    lubrication_factor_f0: Optional[float] = None,
     spin_friction: float = 0.06,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
@@ -181,7 +228,9 @@ def thermal_state(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
-    churning_oil_fraction: float = 0.0,
+    churning_oil_fraction: Optional[float] = None,
+    heat_model: str = "palmgren",
+    lubrication: Optional[str] = None,
     **kwargs: Any,
 ) -> Any:
     """Coupled thermal steady state at ``speed_rpm`` under ``axial_n``
@@ -190,8 +239,9 @@ def thermal_state(
     For a :class:`~thermobear.Bearing`: the seed A network (oil-air
     ``oil_air_temperature_c``, ambient ``ambient_temperature_c``, housing
     of ``housing_material``, ``lubricant`` preset: "ISO VG 32", "ISO VG 68",
-    "e-drive ATF"), Palmgren friction with ``lubrication_factor_f0`` and
-    spin friction coefficient ``spin_friction``. Calibration inputs:
+    "e-drive ATF"), Palmgren friction with ``lubrication_factor_f0`` (None:
+    1, or the ``lubrication`` method's) and spin friction coefficient
+    ``spin_friction``. Calibration inputs:
     ``extra_heat_w`` (W, >= 0; heat at the bearing beyond the modelled
     friction, e.g. from a magnetic pull load, split like rolling heat
     1/4 : 1/2 : 1/4 to inner ring, balls, outer ring) and
@@ -202,7 +252,10 @@ def thermal_state(
     Z (pi/64) C_D X rho_oil D^2 dm^3 omega_c^3, C_D = 0.47, at the solved
     cage speed omega_c, which grows like speed^3; split like rolling heat;
     reported as ``churning_w`` and the ``churning`` row of
-    :attr:`ThermalState.heat`). The defaults reproduce the baseline. Returns a
+    :attr:`ThermalState.heat`). ``heat_model`` ("palmgren" or "skf": heat
+    rows rolling, sliding, seal, extra, churning), ``lubrication`` (sets the
+    defaults of f0 and X) and the SKF keywords: :data:`HEAT_MODEL_OPTIONS`.
+    The defaults reproduce the baseline. Returns a
     :class:`ThermalState`. Raises ``ThermalRunawayError`` when a node passes
     the lubricant's highest temperature or heat, temperatures and contact
     loads grow together, ``ConvergenceError`` when the fixed point stalls.
@@ -212,23 +265,18 @@ def thermal_state(
     loads and ``effects`` that were given, and the remaining keyword
     arguments (for a spindle: ``preload_n``, ``preload_kind``)."""
     if hasattr(bearing, "_thermal_state") and not isinstance(bearing, Bearing):
-        given = {"axial_n": axial_n, "radial_n": radial_n, "effects": effects}
-        given = {k: v for k, v in given.items() if v is not None}
-        return bearing._thermal_state(speed_rpm=speed_rpm, **given, **kwargs)
+        given = {"axial_n": axial_n, "radial_n": radial_n, "effects": effects,
+                 "lubrication": lubrication,
+                 "heat_model": None if heat_model == "palmgren" else heat_model,
+                 "lubrication_factor_f0": lubrication_factor_f0,
+                 "churning_oil_fraction": churning_oil_fraction}  # fmt: skip
+        return _dispatch(bearing, speed_rpm, given, kwargs)
+    heat = {k: kwargs.pop(k) for k in list(kwargs) if k in HEAT_MODEL_OPTIONS}
     _check_bearing_call(bearing, kwargs)
-    options = _model_kwargs(
-        lubricant,
-        lubrication_factor_f0,
-        spin_friction,
-        oil_air_temperature_c,
-        ambient_temperature_c,
-        housing_material,
-        raceway_control,
-        misalignment_rad,
-        extra_heat_w,
-        housing_conductance_scale,
-        churning_oil_fraction,
-    )
+    args = (lubricant, lubrication_factor_f0, spin_friction, oil_air_temperature_c,
+            ambient_temperature_c, housing_material, raceway_control, misalignment_rad,
+            extra_heat_w, housing_conductance_scale, churning_oil_fraction)  # fmt: skip
+    options = _model_kwargs(*args, heat_model=heat_model, lubrication=lubrication, **heat)
     loads = (
         float(0.0 if axial_n is None else axial_n),
         float(0.0 if radial_n is None else radial_n),
@@ -237,6 +285,12 @@ def thermal_state(
         bearing._b, float(speed_rpm), *loads, _effects_arg(effects), **options
     )
     return ThermalState(raw)
+
+
+def _dispatch(machine: Any, speed_rpm: float, given: dict, kwargs: dict) -> Any:
+    """``machine._thermal_state`` with the arguments that were given."""
+    given = {k: v for k, v in given.items() if v is not None}
+    return machine._thermal_state(speed_rpm=speed_rpm, **given, **kwargs)
 
 
 def _check_bearing_call(bearing: Any, kwargs: dict) -> None:

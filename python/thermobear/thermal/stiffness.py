@@ -100,7 +100,7 @@ def thermal_stiffness_curve(
     *,
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
-    lubrication_factor_f0: float = 1.0,
+    lubrication_factor_f0: Optional[float] = None,
     spin_friction: float = 0.06,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
@@ -109,8 +109,9 @@ def thermal_stiffness_curve(
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
-    churning_oil_fraction: float = 0.0,
+    churning_oil_fraction: Optional[float] = None,
     progress: Optional[Callable[[int, int], None]] = None,
+    **heat: Any,
 ) -> "polars.DataFrame":  # noqa: F821
     """The coupled state at every speed (parallel, deterministic): the
     stiffness columns of :func:`thermobear.stiffness_curve` plus
@@ -119,7 +120,9 @@ def thermal_stiffness_curve(
     ``axial_thermal_offset_um``, ``ball_growth_um``, ``extra_heat_w``,
     ``churning_w`` (ball drag heat at ``churning_oil_fraction``, a volume
     fraction 0..1; see :func:`thermal_state`), ``centrifugal_expansion_um``,
-    ``thermal_iterations``."""
+    ``thermal_iterations``. ``heat``: the heat-model keywords of
+    :func:`thermal_state` (``heat_model``, ``lubrication``, ``skf_series``,
+    ``sliding_friction_ehl``, ``replenishment_krs``, ``seal_moment_nmm``)."""
     import polars as pl
 
     speeds = np.ascontiguousarray(np.asarray(speeds_rpm, dtype=float).ravel())
@@ -144,6 +147,7 @@ def thermal_stiffness_curve(
             extra_heat_w,
             housing_conductance_scale,
             churning_oil_fraction,
+            **heat,
         ),
     )
     df = pl.DataFrame({k: np.asarray(v) for k, v in cols.items()})

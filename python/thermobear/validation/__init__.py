@@ -1,0 +1,58 @@
+"""Validation against published data (issue 12 item 8): each shipped set
+(``thermobear/validation/data/*.toml``: source, geometry, conditions,
+points with their sigma) is modelled with thermobear's models, diagnosed
+with :func:`thermobear.diagnose`, one or more inputs calibrated on part of
+the points and the error reported on the points held out.
+
+* ``seed_b_spindle`` -- seed B's measured outer-ring temperatures and
+  vibration, its own model's axial growth and compensation preload
+  (:mod:`.spindle`);
+* ``seed_b_vibration`` -- seed B's measured 18.92 mm/s: unbalance, runout
+  or thermal displacement? (:mod:`.vibration`, issue 12 item 9);
+* ``fag_b70c_rigidity`` -- FAG catalogue axial rigidity and lift-off force
+  of two spindle-bearing pairs (:mod:`.catalogue`).
+
+:func:`validate` runs them and writes the report (:mod:`.report`).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Optional, Sequence
+
+from .result import SetResult
+from .sets import load_set, set_names
+
+__all__ = ["SetResult", "load_set", "run_set", "set_names", "validate"]
+
+
+def run_set(name: str) -> SetResult:
+    """Validate one shipped set by name (see :func:`set_names`)."""
+    from .catalogue import run_catalogue
+    from .spindle import run_spindle
+    from .vibration import run_vibration
+
+    data = load_set(name)
+    runner = {
+        "spindle": run_spindle,
+        "spindle_vibration": run_vibration,
+        "bearing_catalogue": run_catalogue,
+    }[data["kind"]]
+    return runner(data)
+
+
+def validate(sets: Optional[Sequence[str]] = None, out: Optional[Path] = None) -> list[SetResult]:
+    """Run the named validation sets (default: all shipped ones) and, with
+    ``out``, write ``validation.md`` and a figure per set there. Each
+    :class:`SetResult` carries baseline error, verdict, calibrated
+    parameters, held-out error after calibration and, when a set does not
+    pass, what is missing."""
+    names = list(set_names() if not sets else sets)
+    for n in names:
+        load_set(n)  # a bad name fails before any model runs
+    results = [run_set(n) for n in names]
+    if out is not None:
+        from .report import write_report
+
+        write_report(results, Path(out))
+    return results

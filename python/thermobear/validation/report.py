@@ -1,0 +1,95 @@
+"""The validation report: one markdown file with a section per set and a
+figure per set (published value vs model before/after calibration, in units
+of the point's sigma)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .result import SetResult
+
+
+def _figure(r: SetResult, out: Path) -> Path:
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    p = r.points
+    z0 = (p["model_before"] - p["value"]).to_numpy() / p["sigma"].to_numpy()
+    z1 = (p["model_after"] - p["value"]).to_numpy() / p["sigma"].to_numpy()
+    x = np.arange(p.height)
+    fig, ax = plt.subplots(figsize=(7.5, 3.2 + 0.15 * p.height))
+    ax.barh(x - 0.2, np.clip(z0, -50, 50), 0.4, label="baseline")
+    ax.barh(x + 0.2, np.clip(z1, -50, 50), 0.4, label="after calibration")
+    held = p["heldout"].to_numpy()
+    ax.set_yticks(
+        x, [f"{lab}{' (held out)' if h else ''}" for lab, h in zip(p["label"], held, strict=True)]
+    )
+    ax.axvspan(-2, 2, color="0.9", zorder=0, label="within 2 sigma")
+    ax.set_xlabel("(model - published) / sigma (clipped at +-50)")
+    ax.set_title(r.name)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    path = out / f"{r.name}.png"
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _md_table(df: "polars.DataFrame") -> list[str]:  # noqa: F821
+    cols = df.columns
+    lines = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
+    for row in df.iter_rows():
+        cells = [f"{v:.4g}" if isinstance(v, float) else str(v).replace("|", "/") for v in row]
+        lines.append("| " + " | ".join(cells) + " |")
+    return lines
+
+
+def _section(r: SetResult, fig: Path) -> list[str]:
+    status = "PASS" if r.passes else "NOT PASSED"
+    lines = [f"## {r.name}: {r.title}", "", f"Source: {r.source}", ""]
+    lines += [f"**Status: {status}** ({r.seconds:.1f} s). {r.holdout}.", ""]
+    lines += [f"- baseline: worst point {r.baseline_max_sigma:.3g} sigma"]
+    lines += [f"- verdict: {r.verdict}"]
+    for c in r.calibrated:
+        lines.append(
+            f"- calibrated {c['name']} = {c['value']:.4g} {c['unit']} "
+            f"(bounds {c['lower']:.4g}..{c['upper']:.4g})"
+        )
+    lines += [f"- held-out error after calibration: worst {r.heldout_max_sigma_after:.3g} sigma"]
+    if r.missing:
+        lines += [f"- what is missing: {r.missing}"]
+    lines += ["", f"![{r.name}]({fig.name})", ""]
+    cols = [c for c in ("label", "value", "sigma", "model_before", "model_after", "heldout")]
+    lines += _md_table(r.points.select(cols)) + [""]
+    for name, t in r.tables.items():
+        if t is not None and t.height:
+            lines += [f"### {name}", ""] + _md_table(t) + [""]
+    for n in r.notes:
+        lines += ["```" if "\n" in n else "", n, "```" if "\n" in n else "", ""]
+    return lines
+
+
+def write_report(results: list[SetResult], out: Path) -> list[Path]:
+    """``validation.md`` and one PNG per set in ``out``; returns the paths."""
+    out.mkdir(parents=True, exist_ok=True)
+    files, lines = [], ["# thermobear validation against published data", ""]
+    lines += ["| set | status | baseline worst (sigma) | held-out after (sigma) | verdict |"]
+    lines += ["|---|---|---|---|---|"]
+    for r in results:
+        lines.append(
+            f"| {r.name} | {'PASS' if r.passes else 'NOT PASSED'} | "
+            f"{r.baseline_max_sigma:.3g} | {r.heldout_max_sigma_after:.3g} | "
+            + r.verdict.replace("|", "/")
+            + " |"
+        )
+    lines.append("")
+    for r in results:
+        fig = _figure(r, out)
+        files.append(fig)
+        lines += _section(r, fig)
+    md = out / "validation.md"
+    md.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return [md] + files

@@ -1,0 +1,61 @@
+"""The outcome of validating one set: :class:`SetResult`."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+
+@dataclass
+class SetResult:
+    """One validation set against thermobear's models.
+
+    ``points``: polars frame, one row per published point (``label``,
+    ``quantity``, ``value``, ``sigma``, ``model_before``, ``model_after``,
+    ``heldout``: not used for calibration); ``verdict``: the diagnosis'
+    verdict (or why none was run); ``calibrated``: dicts ``name, value,
+    lower, upper, unit``; ``missing``: a plain statement of what the models
+    lack when the set does not pass (empty when it passes); ``tables``:
+    further named frames for the report; ``notes``: lines for the report."""
+
+    name: str
+    title: str
+    source: str
+    points: Any
+    verdict: str
+    calibrated: list = field(default_factory=list)
+    holdout: str = ""
+    missing: str = ""
+    tables: dict = field(default_factory=dict)
+    notes: list = field(default_factory=list)
+    seconds: float = 0.0
+
+    def _z(self, col: str, held: bool) -> Any:
+        import numpy as np
+
+        p = self.points.filter(self.points["heldout"]) if held else self.points
+        return np.abs((p[col].to_numpy() - p["value"].to_numpy()) / p["sigma"].to_numpy())
+
+    @property
+    def baseline_max_sigma(self) -> float:
+        """Largest |model - value| / sigma of the baseline over all points."""
+        z = self._z("model_before", False)
+        return float(z.max()) if z.size else 0.0
+
+    @property
+    def heldout_max_sigma_after(self) -> float:
+        """Largest |model - value| / sigma after calibration on the held-out
+        points (NaN without held-out points)."""
+        z = self._z("model_after", True)
+        return float(z.max()) if z.size else float("nan")
+
+    @property
+    def parameters_in_bounds(self) -> bool:
+        return all(c["lower"] <= c["value"] <= c["upper"] for c in self.calibrated)
+
+    @property
+    def passes(self) -> bool:
+        """Held-out error after calibration within 2 sigma, parameters inside
+        their bounds."""
+        z = self.heldout_max_sigma_after
+        return bool(z == z and z <= 2.0 and self.parameters_in_bounds)

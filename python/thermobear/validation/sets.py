@@ -1,0 +1,48 @@
+"""The validation sets shipped with the package (``validation/data/*.toml``,
+package data): one published measurement or catalogue set per file, with
+its source, geometry, conditions, points and the sigma of each point with
+its justification."""
+
+from __future__ import annotations
+
+import tomllib
+from importlib import resources
+from typing import Any
+
+from ..errors import ConfigError
+
+
+def set_names() -> list[str]:
+    """The names of the shipped validation sets (file stems)."""
+    root = resources.files("thermobear.validation").joinpath("data")
+    return sorted(p.name[:-5] for p in root.iterdir() if p.name.endswith(".toml"))
+
+
+def load_set(name: str) -> dict[str, Any]:
+    """One validation set as a dict (the TOML's tables); ConfigError naming
+    the known sets for an unknown name."""
+    names = set_names()
+    if name not in names:
+        raise ConfigError(f"invalid set = {name!r}: known: {', '.join(names)}")
+    path = resources.files("thermobear.validation").joinpath("data").joinpath(f"{name}.toml")
+    data = tomllib.loads(path.read_text(encoding="utf-8"))
+    for key in ("name", "kind", "title", "source", "geometry", "sigma"):
+        if key not in data:
+            raise ConfigError(f"invalid set = {name!r}: the file has no {key!r}")
+    if "points" not in data and "bearings" not in data:
+        raise ConfigError(f"invalid set = {name!r}: the file has no points")
+    return data
+
+
+def points_frame(data: dict) -> "polars.DataFrame":  # noqa: F821
+    """The set's points as a polars frame: its ``[[points]]``, or for a
+    catalogue set the rows expanded from ``[[bearings]]``
+    (:func:`thermobear.validation.catalogue.catalogue_points`); every row has
+    ``quantity``, ``value`` and ``sigma``."""
+    import polars as pl
+
+    if "points" in data:
+        return pl.DataFrame(data["points"])
+    from .catalogue import catalogue_points
+
+    return catalogue_points(data)

@@ -1,0 +1,159 @@
+"""Validation against published data (issue 12 items 8 and 9): the shipped
+sets, their outcome (pass within 2 sigma on held-out points, or a plain
+statement of what is missing), seed B's vibration model and the choice
+between unbalance, runout and thermal displacement."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+import polars as pl
+import pytest
+
+import thermobear as tb
+from thermobear.cli.main import main
+from thermobear.validation import load_set, run_set, set_names
+from thermobear.validation.sets import points_frame
+
+
+@pytest.fixture(scope="module")
+def results():
+    return {n: run_set(n) for n in set_names()}
+
+
+def test_every_set_has_source_conditions_and_sigma_justified():
+    assert len(set_names()) >= 3
+    for n in set_names():
+        d = load_set(n)
+        assert d["source"]["citation"].strip() and d["source"]["reading"].strip()
+        assert "geometry" in d and "sigma" in d
+        for p in points_frame(d).iter_rows(named=True):
+            assert p["sigma"] > 0.0
+            assert p["quantity"].split(":")[0] in d["sigma"], (n, p["quantity"])  # justified
+
+
+def test_unknown_set_is_a_config_error():
+    with pytest.raises(tb.ConfigError, match="known: "):
+        tb.validate(["no_such_set"])
+
+
+def test_catalogue_rigidity_passes_on_held_out_points(results):
+    r = results["fag_b70c_rigidity"]
+    assert r.passes and r.parameters_in_bounds
+    assert r.heldout_max_sigma_after <= 2.0
+    held = r.points.filter(r.points["heldout"])
+    assert held.height == 69  # calibrated on three rigidities of B7009C, checked on 69
+    # without calibration the assumed geometry is already within 2 sigma (5 %) on
+    # every lift-off force: the load-deflection law, not the geometry, sets them
+    lift = r.points.filter(r.points["quantity"] == "lift_off_force_n")
+    z = np.abs(lift["model_before"] - lift["value"]) / lift["sigma"]
+    assert z.max() <= 2.0
+    # Physics: a pair lifts off above 2^1.5 x preload (Hertz exponent at a constant
+    # angle) because the contact angle grows under load, more so at higher preload.
+    ratio = (lift["model_before"] / lift["preload_n"]).to_numpy()
+    assert np.all(ratio > 2.0**1.5)
+    for b in set(lift["bearing"].to_list()):
+        rb = (
+            lift.filter(lift["bearing"] == b)["model_before"]
+            / lift.filter(lift["bearing"] == b)["preload_n"]
+        ).to_numpy()
+        assert np.all(np.diff(rb) > 0.0)
+
+
+def test_seed_b_spindle_states_what_is_missing(results):
+    r = results["seed_b_spindle"]
+    assert not r.passes
+    # The plain statement: no candidate closes the axial growth (assumed spindle
+    # lengths: 81-103 um against the paper's model's 18-35 um).
+    assert "axial_growth_um" in r.missing
+    pts = r.points
+    growth = pts.filter(pts["quantity"] == "axial_growth_um")
+    assert np.all(growth["model_before"].to_numpy() > 2.0 * growth["value"].to_numpy())
+    # the rear outer ring agrees within 2 sigma, the front is colder than measured
+    rear = pts.filter(pts["quantity"] == "temperature_c:rear_outer")
+    assert abs(rear["model_before"][0] - rear["value"][0]) <= 2.0 * rear["sigma"][0]
+    front = pts.filter(pts["quantity"] == "temperature_c:front_outer")
+    assert front["model_before"][0] < front["value"][0] - 2.0 * front["sigma"][0]
+    # a G2.5 unbalance on this stiff spindle: hundredths of mm/s, not 18.92
+    vib = pts.filter(pts["quantity"] == "velocity_rms_mm_s")
+    assert vib["model_before"][0] < 0.1
+    assert "text_18000" in r.holdout
+    # the paper's compensation preload / growth = its spring rate, 0.36 N/um; a
+    # calibrated softer spring only hides the growth gap, and the report says so
+    assert "implies a spring rate of 0.36 N/um" in r.notes[0]
+    assert "has no candidate" in r.notes[0]
+    ref = r.tables["reference"]
+    assert ref.height == 4 and np.all(ref["thermobear"].to_numpy() > 0.0)
+
+
+def test_seed_b_vibration_model_reproduces_its_numbers():
+    # Seed B's own displacements in its own model (v = omega e): 6.5 um at
+    # 12,000 rpm and 1.56 x 6.5 um at 18,000 rpm against its 7.53 / 18.78 mm/s
+    # simulations and the measured 18.92 mm/s (sigma 5 %).
+    v12, v18 = tb.rotor.orbit_velocity_mm_s([12_000.0, 18_000.0], [6.5, 1.56 * 6.5])
+    assert abs(v18 - 18.92) <= 0.946
+    assert abs(v18 - 18.78) / 18.78 < 0.02
+    assert abs(v12 - 7.53) / 7.53 < 0.10
+
+
+def test_displacement_vibration_is_omega_times_displacement():
+    df = tb.vibration("seed-ceramic-spindle", [9_000.0, 18_000.0], model="seed-b")
+    omega = 2 * np.pi * df["speed_rpm"].to_numpy() / 60.0
+    e_mm = df["radial_displacement_um"].to_numpy() * 1e-3
+    np.testing.assert_allclose(df["velocity_mm_s"].to_numpy(), omega * e_mm, rtol=1e-12)
+    # the thermal displacement grows with speed (hotter rings)
+    u = df["thermal_radial_displacement_um"].to_numpy()
+    assert 0.0 < u[0] < u[1]
+    unc = tb.rotor.displacement_vibration("seed-ceramic-spindle", [18_000.0], coupled=False)
+    assert unc["thermal_radial_displacement_um"][0] == 0.0
+    with pytest.raises(tb.ConfigError, match="runout_um"):
+        tb.rotor.displacement_vibration("seed-ceramic-spindle", [1.0], runout_um=-1.0)
+    with pytest.raises(tb.ConfigError, match="model"):
+        tb.vibration("seed-ceramic-spindle", [1_000.0], model="other")
+
+
+def test_seed_b_vibration_diagnosis_finds_runout_not_unbalance(results):
+    r = results["seed_b_vibration"]
+    assert "runout_um" in r.verdict
+    assert r.parameters_in_bounds
+    src = {row["source"]: row for row in r.tables["sources"].iter_rows(named=True)}
+    # unbalance: far outside any spindle grade, and too steep in speed for the
+    # paper's statement that the measured 1X at 12,000 rpm exceeds 7.53 mm/s
+    assert src["unbalance_grade"]["amplitude_needed"] > 40.0
+    assert src["unbalance_grade"]["v_12000rpm_mm_s"] < 7.53
+    # runout: inside its bounds and consistent with the 12,000 rpm statement
+    assert src["runout_um"]["inside_bounds"] and src["runout_um"]["v_12000rpm_mm_s"] > 7.53
+    # our thermal displacement alone falls short of the measured value
+    assert src["thermal_displacement (our u_Tr)"]["v_18000rpm_mm_s"] < 18.92 - 2 * 0.946
+    assert "cannot separate" in r.notes[0] and "one measured number" in r.missing
+
+
+def test_vibration_sources_are_linear_and_kinematic():
+    from thermobear.validation.vibration import VibrationSourceSpec
+
+    spec = VibrationSourceSpec(tb.Spindle.preset("seed-ceramic-spindle"))
+    cond = pl.DataFrame({"speed_rpm": [12_000.0, 18_000.0]})
+    q = "velocity_mm_s"
+    g1 = spec.with_setting(unbalance_grade=1.0).predict(cond)[q]
+    g4 = spec.with_setting(unbalance_grade=4.0).predict(cond)[q]
+    np.testing.assert_allclose(g4, 4.0 * g1, rtol=1e-9)  # forced response linear in U
+    eps = spec.with_setting(unbalance_grade=0.0, runout_um=10.0).predict(cond)[q]
+    omega = 2 * np.pi * cond["speed_rpm"].to_numpy() / 60.0
+    np.testing.assert_allclose(eps, omega * 10.0e-3, rtol=1e-12)  # omega x epsilon
+    th = spec.with_setting(["thermal_displacement"], unbalance_grade=0.0).predict(cond)[q]
+    assert 0.0 < th[0] < th[1]
+    with pytest.raises(tb.ConfigError, match="runout_um"):
+        spec.with_setting(runout_um=float("nan"))
+
+
+def test_validate_command_writes_report_quickly(tmp_path, capsys):
+    t0 = time.perf_counter()
+    assert main(["validate", "--out", str(tmp_path)]) == 0
+    elapsed = time.perf_counter() - t0
+    assert elapsed < 120.0  # issue 12: every set under 2 minutes
+    md = (tmp_path / "validation.md").read_text()
+    for n in set_names():
+        assert f"## {n}" in md and (tmp_path / f"{n}.png").exists()
+    assert "held out" in md.lower()
+    assert "thermobear validate: 3 sets" in capsys.readouterr().out
