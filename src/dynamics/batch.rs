@@ -29,7 +29,7 @@
 //! Every lane performs exactly the same floating-point operations, in the
 //! same order, as the one-lane kernel used by
 //! [`crate::dynamics::GridOde::rk4_step`] of [`HelicalPairSystem`] (no fused
-//! multiply-add, see [`super::simd`]): batch lanes equal scalar runs bitwise,
+//! multiply-add, see `src/dynamics/simd.rs`): batch lanes equal scalar runs bitwise,
 //! on every instruction set and CPU, whatever lanes a system is grouped with
 //! (tested). The instruction set is detected at run time ([`Isa`]).
 
