@@ -1,7 +1,13 @@
 """Every third-party module the package imports at run time is a declared
 runtime dependency, so a fresh ``pip install .`` brings everything the
 package needs (a regression once crashed ``thermobear demo`` for every new
-user: scipy came only with the test extra)."""
+user: scipy came only with the test extra).
+
+The one exception: a module of an optional *feature* extra (an extra other
+than the tooling ones, ``test``, ``docs``, ``bench``; e.g. ``dask`` for
+studies on a cluster) may be imported where every import of it is guarded,
+inside a ``try`` whose handler catches ``ImportError`` (so the package works
+without it and says what to install)."""
 
 from __future__ import annotations
 
@@ -49,6 +55,62 @@ def imported_top_level_modules(package: Path) -> dict[str, list[str]]:
     return found
 
 
+#: Extras for the project's own tooling; their packages may not be imported
+#: by the package, guarded or not.
+TOOLING_EXTRAS = ("test", "docs", "bench")
+
+
+def feature_extra_requirements() -> dict[str, str]:
+    """Distribution name -> the feature extra that declares it."""
+    out = {}
+    for extra, reqs in PYPROJECT["project"].get("optional-dependencies", {}).items():
+        if extra not in TOOLING_EXTRAS:
+            for r in reqs:
+                out[_requirement_name(r)] = extra
+    return out
+
+
+def _catches_import_error(handler: ast.ExceptHandler) -> bool:
+    names = []
+    t = handler.type
+    for node in t.elts if isinstance(t, ast.Tuple) else [t]:
+        if isinstance(node, ast.Name):
+            names.append(node.id)
+    return bool({"ImportError", "ModuleNotFoundError"} & set(names))
+
+
+def guarded_import_nodes(tree: ast.AST) -> set[int]:
+    """ids of the import nodes inside the body of a ``try`` that catches
+    ImportError (or ModuleNotFoundError)."""
+    guarded: set[int] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Try) and any(_catches_import_error(h) for h in node.handlers):
+            for stmt in node.body:
+                for inner in ast.walk(stmt):
+                    if isinstance(inner, (ast.Import, ast.ImportFrom)):
+                        guarded.add(id(inner))
+    return guarded
+
+
+def guarded_only_modules(package: Path) -> set[str]:
+    """Top-level modules every import of which is guarded (see above)."""
+    guarded: dict[str, bool] = {}
+    for path in sorted(package.rglob("*.py")):
+        tree = ast.parse(path.read_text(), filename=str(path))
+        inside = guarded_import_nodes(tree)
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                names = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+                names = [node.module]
+            else:
+                continue
+            for name in names:
+                top = name.split(".")[0]
+                guarded[top] = guarded.get(top, True) and id(node) in inside
+    return {m for m, g in guarded.items() if g}
+
+
 def third_party(modules: dict[str, list[str]]) -> dict[str, list[str]]:
     local = {"thermobear"}
     return {m: w for m, w in modules.items() if m not in sys.stdlib_module_names and m not in local}
@@ -64,17 +126,45 @@ def test_the_ast_walk_sees_lazy_imports(tmp_path):
     assert set(mods) == {"scipy", "yaml"}
 
 
-def test_every_runtime_import_is_a_declared_dependency():
+def undeclared_imports(package: Path) -> list[str]:
     declared = runtime_requirements()
+    optional = feature_extra_requirements()
+    guarded = guarded_only_modules(package)
     providers = metadata.packages_distributions()
     missing = []
-    for module, where in sorted(third_party(imported_top_level_modules(PACKAGE)).items()):
+    for module, where in sorted(third_party(imported_top_level_modules(package)).items()):
         # Import name -> distribution(s) from the installed metadata; a module
         # not installed here is taken to be its own distribution name.
         dists = {_normalise(d) for d in providers.get(module, [module])}
-        if not dists & declared:
-            missing.append(f"{module} (distribution {sorted(dists)}) at {where[:3]}")
+        if dists & declared:
+            continue
+        if module in guarded and dists & set(optional):
+            continue  # an optional feature, imported only under a guard
+        missing.append(f"{module} (distribution {sorted(dists)}) at {where[:3]}")
+    return missing
+
+
+def test_every_runtime_import_is_a_declared_dependency():
+    missing = undeclared_imports(PACKAGE)
     assert not missing, "undeclared runtime imports:\n" + "\n".join(missing)
+
+
+def test_optional_extra_imports_must_be_guarded(tmp_path):
+    # dask is in the `dask` feature extra: fine under a guard, not without
+    # one; a test-only package (hypothesis) is never fine.
+    assert "dask" in feature_extra_requirements()
+    (tmp_path / "ok.py").write_text(
+        "def f():\n    try:\n        from dask.distributed import Client\n"
+        "    except ImportError:\n        raise RuntimeError('pip install x[dask]')\n"
+    )
+    assert undeclared_imports(tmp_path) == []
+    (tmp_path / "bare.py").write_text("def g():\n    import dask\n")
+    assert [m.split()[0] for m in undeclared_imports(tmp_path)] == ["dask"]
+    (tmp_path / "bare.py").unlink()
+    (tmp_path / "tool.py").write_text(
+        "try:\n    import hypothesis\nexcept ImportError:\n    hypothesis = None\n"
+    )
+    assert [m.split()[0] for m in undeclared_imports(tmp_path)] == ["hypothesis"]
 
 
 def test_installed_metadata_matches_pyproject():

@@ -27,6 +27,7 @@ LAYERS: list[tuple[str, ...]] = [
     ("thermobear.thermal",),
     ("thermobear.gear", "thermobear.spindle", "thermobear.rotor"),
     ("thermobear.diagnosis",),
+    ("thermobear.study",),
     ("thermobear.plot",),
     ("thermobear.studies", "thermobear.validation"),
     ("thermobear.cli",),

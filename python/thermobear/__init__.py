@@ -14,6 +14,7 @@ or below; ``tests/test_layout.py`` checks it):
   thermal network, stiffness against speed; ``gear``, ``spindle``,
   ``rotor`` -- the machines;
 * ``diagnosis`` -- model against measurements, step by step;
+* ``study`` -- design studies: grids in chunks, parquet, resume, Dask;
 * ``plot`` -- figures, one module per topic;
 * ``studies`` (the seed studies, ``thermobear demo``) and ``validation``
   (published data sets, ``thermobear validate``), ``cli`` on top.
@@ -29,6 +30,7 @@ from . import (
     plot,
     rotor,
     spindle,
+    study,
     thermal,
     validation,
 )
@@ -71,7 +73,14 @@ from .spindle import (
     spindle_grid,
     transient,
 )
-from .thermal import ThermalState, lubrication_defaults, stiffness_curve, thermal_state
+from .study import Study, load_study
+from .thermal import (
+    ThermalState,
+    lubrication_defaults,
+    stiffness_curve,
+    thermal_state,
+    thermal_state_many,
+)
 from .validation import validate
 
 __version__: str = _native.__version__
@@ -98,6 +107,7 @@ __all__ = [
     "spindle",
     "rotor",
     "diagnosis",
+    "study",
     "plot",
     "validation",
     # errors
@@ -118,6 +128,7 @@ __all__ = [
     "lubrication_defaults",
     "stiffness_curve",
     "thermal_state",
+    "thermal_state_many",
     # gear dynamics
     "GearPair",
     "GearSystem",
@@ -151,6 +162,9 @@ __all__ = [
     "load_spindle_measurements",
     "seed_b_measurements",
     "spindle_candidates",
+    # design studies
+    "Study",
+    "load_study",
     # validation against published data
     "validate",
 ]

@@ -138,6 +138,23 @@ def stiffness_curve(
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
 
+# ---- batch entry points (src/python/batch.rs): one row per point, errors per row ----
+
+def solve_many(
+    bearing: Bearing,
+    axial_n: npt.NDArray[np.float64],
+    radial_n: npt.NDArray[np.float64],
+    moment_nmm: npt.NDArray[np.float64],
+    speed_rpm: npt.NDArray[np.float64],
+    effects: Optional[Sequence[str]] = None,
+    raceway_control: str = "outer",
+    misalignment_rad: Optional[float] = 0.0,
+    threads: Optional[int] = None,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> dict[str, Any]:
+    """Output arrays (NaN/0 where a point failed), ``ok`` (bool array),
+    ``error_kind`` and ``error`` (lists of str or None)."""
+
 # ---- helical gear pair dynamics (src/python/gear.rs) ----
 
 class GearPair:
@@ -438,6 +455,35 @@ def thermal_stiffness_curve(
     seal_moment_nmm: float = 0.0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
+def thermal_state_many(
+    bearing: Bearing,
+    speed_rpm: npt.NDArray[np.float64],
+    axial_n: npt.NDArray[np.float64],
+    radial_n: npt.NDArray[np.float64],
+    effects: Optional[Sequence[str]] = None,
+    lubricant: str = "e-drive ATF",
+    lubrication_factor_f0: Optional[float] = None,
+    spin_friction: float = 0.06,
+    oil_air_temperature_c: float = 28.0,
+    ambient_temperature_c: float = 26.0,
+    housing_material: Optional[Material] = None,
+    raceway_control: str = "outer",
+    misalignment_rad: Optional[float] = 0.0,
+    extra_heat_w: float = 0.0,
+    housing_conductance_scale: float = 1.0,
+    churning_oil_fraction: Optional[float] = None,
+    heat_model: str = "palmgren",
+    lubrication: Optional[str] = None,
+    skf_series: Optional[str] = None,
+    sliding_friction_ehl: Optional[float] = None,
+    replenishment_krs: Optional[float] = None,
+    seal_moment_nmm: float = 0.0,
+    threads: Optional[int] = None,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> dict[str, Any]:
+    """Columns of :func:`solve_many` plus temperatures, heat and thermal
+    offsets per point; ``ok``, ``error_kind``, ``error``."""
+
 def lubrication_defaults(lubrication: str, bearing_type: str) -> dict[str, Any]: ...
 def skf_sliding_friction_ehl(lubricant: str) -> float: ...
 def seed_a_network_links(

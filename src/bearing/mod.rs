@@ -11,6 +11,7 @@
 //! * [`stiffness`]: the seed's axial/radial stiffness (A-39..A-42); the full
 //!   5x5 matrix is part of every [`BearingState`].
 //! * [`sweep`]: parallel speed sweeps and stiffness curves.
+//! * [`batch`]: many operating points in one call, one result per point.
 //!
 //! ```
 //! use thermobear::bearing::{BearingLoad, BearingModel, SolveOptions, stiffness_curve};
@@ -25,6 +26,7 @@
 //! assert!(curve[1].axial_stiffness_n_per_m < curve[0].axial_stiffness_n_per_m);
 //! ```
 
+pub mod batch;
 pub mod contact;
 pub mod dual;
 pub mod geometry;
@@ -41,6 +43,7 @@ use std::f64::consts::PI;
 
 use crate::error::{non_negative, Error, Result};
 use crate::materials::{reduced_modulus, Material};
+pub use batch::{solve_many, OperatingPoint, PointSummary};
 pub use contact::{HertzContact, Raceway};
 pub use geometry::{BearingGeometry, BearingType};
 pub use kinematics::{ball_kinematics, BallKinematics};

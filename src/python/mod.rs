@@ -3,6 +3,7 @@
 
 use pyo3::prelude::*;
 
+pub mod batch;
 pub mod bearing;
 pub mod errors;
 pub mod gear;
@@ -18,6 +19,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
     bearing::register(m)?;
     solve::register(m)?;
+    batch::register(m)?;
     gear::register(m)?;
     rotor::register(m)?;
     spindle::register(m)?;

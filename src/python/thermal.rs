@@ -343,6 +343,65 @@ pub fn thermal_stiffness_curve<'py>(
     Ok(d)
 }
 
+/// Coupled thermal states of many operating points (arrays of one length:
+/// speed, axial and radial load) under one set of model settings, one row per
+/// point with its error if it failed (see `batch.rs`).
+#[pyfunction]
+#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=None, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, churning_oil_fraction=None, heat_model="palmgren".to_string(), lubrication=None, skf_series=None, sliding_friction_ehl=None, replenishment_krs=None, seal_moment_nmm=0.0, threads=None, progress=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn thermal_state_many<'py>(
+    py: Python<'py>,
+    bearing: &PyBearing,
+    speed_rpm: PyReadonlyArray1<'py, f64>,
+    axial_n: PyReadonlyArray1<'py, f64>,
+    radial_n: PyReadonlyArray1<'py, f64>,
+    effects: Option<Vec<String>>,
+    lubricant: String,
+    lubrication_factor_f0: Option<f64>,
+    spin_friction: f64,
+    oil_air_temperature_c: f64,
+    ambient_temperature_c: f64,
+    housing_material: Option<PyMaterial>,
+    raceway_control: String,
+    misalignment_rad: Option<f64>,
+    extra_heat_w: f64,
+    housing_conductance_scale: f64,
+    churning_oil_fraction: Option<f64>,
+    heat_model: String,
+    lubrication: Option<String>,
+    skf_series: Option<String>,
+    sliding_friction_ehl: Option<f64>,
+    replenishment_krs: Option<f64>,
+    seal_moment_nmm: f64,
+    threads: Option<usize>,
+    progress: Option<Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let settings = Settings {
+        effects,
+        lubricant,
+        lubrication_factor_f0,
+        spin_friction,
+        oil_air_temperature_c,
+        ambient_temperature_c,
+        housing_material,
+        raceway_control,
+        misalignment_rad,
+        extra_heat_w,
+        housing_conductance_scale,
+        churning_oil_fraction,
+        heat: HeatArgs {
+            heat_model,
+            lubrication,
+            skf_series,
+            sliding_friction_ehl,
+            replenishment_krs,
+            seal_moment_nmm,
+        },
+    };
+    let c = settings.build(&bearing.inner).py_err()?;
+    super::batch::thermal_many(py, &c, [&speed_rpm, &axial_n, &radial_n], threads, progress.as_ref())
+}
+
 fn seed_a_params(
     bearing: &Bearing,
     lubricant: &str,
@@ -480,6 +539,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(seed_a_steady_temperatures, m)?)?;
     m.add_function(wrap_pyfunction!(thermal_state, m)?)?;
     m.add_function(wrap_pyfunction!(thermal_stiffness_curve, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal_state_many, m)?)?;
     m.add_function(wrap_pyfunction!(lubrication_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(skf_sliding_friction_ehl, m)?)?;
     Ok(())

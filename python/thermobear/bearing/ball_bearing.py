@@ -200,6 +200,51 @@ class Bearing:
         )
         return BearingSolution(raw)
 
+    def solve_many(
+        self,
+        points: Any,
+        *,
+        effects: Optional[Sequence[str]] = None,
+        raceway_control: str = "outer",
+        misalignment_rad: Optional[float] = 0.0,
+        threads: Optional[int] = None,
+        progress: Any = None,
+    ) -> "polars.DataFrame":  # noqa: F821
+        """Solve many operating points in one native call (rayon threads,
+        GIL released, Ctrl-C within 50 ms), each exactly as :meth:`solve`
+        would (bit for bit).
+
+        ``points``: a polars DataFrame (or a mapping of columns) with any of
+        ``axial_n``, ``radial_n``, ``moment_nmm``, ``speed_rpm`` (absent: 0);
+        other columns are carried through. Options as in :meth:`solve`, for
+        every point; ``threads`` (default: all cores) and
+        ``progress(done, total)``.
+
+        Returns the input columns followed by one row of outputs per point:
+        ``axial_stiffness_n_per_m``, ``radial_stiffness_n_per_m`` (seed A),
+        ``k_xx_n_per_m``, ``k_zz_n_per_m``, ``k_ryry_nm_per_rad`` (diagonal of
+        the tangent stiffness), ``axial_displacement_um``,
+        ``radial_displacement_um``, ``tilt_rad``, inner/outer contact angle
+        max/min (``_deg``), ``inner_load_max_n``, ``outer_load_max_n``,
+        ``centrifugal_force_n``, ``cage_speed_rpm``, ``residual``,
+        ``iterations``, then ``ok``, ``error_kind`` and ``error``: a point that
+        fails (bad input, no convergence) is a row with its error and null
+        outputs; nothing is raised for it."""
+        from .batch import column_array, join_inputs, operating_frame, result_frame
+
+        names = ("axial_n", "radial_n", "moment_nmm", "speed_rpm")
+        frame = operating_frame(points, names)
+        raw = _native.solve_many(
+            self._b,
+            *(column_array(frame, c) for c in names),
+            effects=_effects_arg(effects),
+            raceway_control=raceway_control,
+            misalignment_rad=None if misalignment_rad is None else float(misalignment_rad),
+            threads=None if threads is None else int(threads),
+            progress=progress,
+        )
+        return join_inputs(frame, result_frame(raw))
+
     def ring_forces(
         self,
         displacement: Sequence[float],

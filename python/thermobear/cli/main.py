@@ -66,6 +66,34 @@ def _cmd_diagnose(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_study(args: argparse.Namespace) -> int:
+    from .study import run_study_file
+
+    report = run_study_file(
+        Path(args.grid),
+        Path(args.out),
+        scheduler=args.scheduler,
+        progress=False if args.no_progress else None,
+        overwrite=args.overwrite,
+    )
+    print(f"thermobear study: {report}")
+    return 0
+
+
+def _add_study(sub: argparse._SubParsersAction) -> None:
+    st = sub.add_parser(
+        "study", help="run a design study (grid in TOML) into parquet chunks; resumes"
+    )
+    st.add_argument("grid", help="path to the study's .toml ([study], [grid], [fixed])")
+    st.add_argument("--out", required=True, help="results folder (manifest + chunks/*.parquet)")
+    st.add_argument("--scheduler", default=None, help="Dask scheduler address (tcp://host:8786)")
+    st.add_argument("--no-progress", action="store_true", help="no progress bar")
+    st.add_argument(
+        "--overwrite", action="store_true", help="replace the results of another grid in --out"
+    )
+    st.set_defaults(func=_cmd_study)
+
+
 def _cmd_validate(args: argparse.Namespace) -> int:
     from .validate import validate_command
 
@@ -108,6 +136,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     g.add_argument("--out", default=None, help="folder for tables and figures")
     g.set_defaults(func=_cmd_diagnose)
+    _add_study(sub)
     v = sub.add_parser("validate", help="model, diagnose and calibrate the published data sets")
     v.add_argument("sets", nargs="*", metavar="SET", help="set names (default: all)")
     v.add_argument(

@@ -234,7 +234,7 @@ class GearSystem:
         return np.asarray(self._s.natural_frequencies_hz(float(speed_rpm), float(k)))
 
     def static_state_m(self, speed_rpm: float = 10_000.0) -> np.ndarray:
-        """Static equilibrium q = [x_p, y_p, z_p, x_g, y_g, z_g, u] [m] in
+        """Static equilibrium q = [x_p, y_p, z_p, x_g, y_g, z_g, u] (in m) in
         contact at the mean mesh stiffness and TE (back flank for coast)."""
         return np.asarray(self._s.static_state_m(float(speed_rpm)))
 

@@ -3,6 +3,7 @@ thermo-mechanical state; stiffness against speed under the constant, speed
 and thermal models (crate: ``src/thermal``, bindings
 ``src/python/thermal.rs``)."""
 
+from .batch import thermal_state_many
 from .state import (
     HEAT_MODEL_OPTIONS,
     THERMAL_EFFECTS,
@@ -19,5 +20,6 @@ __all__ = [
     "lubrication_defaults",
     "stiffness_curve",
     "thermal_state",
+    "thermal_state_many",
     "thermal_stiffness_curve",
 ]

@@ -1,0 +1,564 @@
+"""The kinds of point a study computes: their inputs (with units and
+defaults) and how a chunk of points is computed.
+
+Every kind maps a frame of input rows to a frame of outputs with the same
+number of rows, a fixed schema, and ``ok``, ``error_kind``, ``error``: a
+point that fails (no convergence, thermal runaway, a setting the model
+rejects) is a row with its error and null outputs, never an exception.
+
+* ``bearing``: the quasi-static solve at speed (:meth:`Bearing.solve_many`);
+* ``thermal``: the coupled thermal state of one bearing
+  (:func:`thermobear.thermal_state`, batched);
+* ``spindle``: the coupled steady state of a spindle
+  (:meth:`Spindle.thermal_state`);
+* ``gear``: the motion regime of the gear system at a speed
+  (:func:`thermobear.regime_map` of one cell).
+"""
+
+from __future__ import annotations
+
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
+from typing import Any, Callable, Optional
+
+from ..errors import ConfigError, ThermobearError
+
+Runner = Callable[["Kind", Any, Optional[int]], Any]
+
+
+@dataclass(frozen=True)
+class Param:
+    """One input of a kind: a grid dimension or a fixed setting."""
+
+    name: str
+    type: type
+    default: Any
+    doc: str
+    #: A column of the native batch call (speed, loads); the other inputs
+    #: define the model, and points are grouped by them.
+    per_point: bool = False
+    #: Checks a value (raises ConfigError), e.g. a preset name.
+    check: Optional[Callable[[Any], None]] = None
+
+
+@dataclass(frozen=True)
+class Kind:
+    """A kind of point: its inputs, its outputs (name -> polars dtype name)
+    and the function that computes a chunk."""
+
+    name: str
+    doc: str
+    params: tuple[Param, ...]
+    outputs: tuple[tuple[str, str], ...]
+    run: Runner
+
+    def param(self, name: str) -> Param:
+        for p in self.params:
+            if p.name == name:
+                return p
+        known = ", ".join(p.name for p in self.params)
+        raise ConfigError(
+            f"invalid key = {name!r}: not an input of a {self.name} point; known: {known}"
+        )
+
+    def compute(self, inputs: Any, threads: Optional[int] = None) -> Any:
+        """Outputs of the input rows (fixed schema, same height)."""
+        import polars as pl
+
+        out = self.run(self, inputs, threads)
+        schema = {n: getattr(pl, t) for n, t in self.outputs}
+        schema.update(ok=pl.Boolean, error_kind=pl.String, error=pl.String)
+        missing = [c for c in schema if c not in out.columns]
+        out = out.with_columns(pl.lit(None).alias(c) for c in missing)
+        return out.select(pl.col(c).cast(t) for c, t in schema.items())
+
+
+# -- checks of names --------------------------------------------------------
+
+
+def _choice(names: Callable[[], list[str]], what: str) -> Callable[[Any], None]:
+    def check(value: Any) -> None:
+        known = names()
+        if value not in known:
+            raise ConfigError(f"invalid {what} = {value!r}: unknown; known: {', '.join(known)}")
+
+    return check
+
+
+def _bearing_names() -> list[str]:
+    from ..bearing import Bearing
+
+    return Bearing.preset_names()
+
+
+def _material_names() -> list[str]:
+    from ..bearing import Material
+
+    return Material.preset_names()
+
+
+def _spindle_names() -> list[str]:
+    from ..spindle import Spindle
+
+    return Spindle.preset_names()
+
+
+def _gear_names() -> list[str]:
+    from ..gear import GearPair
+
+    return GearPair.preset_names()
+
+
+def _check_lubricant(name: Any) -> None:
+    # The network of any bearing names the lubricant's data; the native
+    # side rejects an unknown preset with the known ones listed.
+    from .. import _native
+    from ..bearing import Bearing
+
+    _native.seed_a_network_links(Bearing.preset("6208")._b, 0.0, lubricant=str(name))
+
+
+def _check_lubrication(name: Any) -> None:
+    from .. import _native
+
+    _native.lubrication_defaults(str(name), "angular_contact")
+
+
+def _one_of(what: str, *values: str) -> Callable[[Any], None]:
+    return _choice(lambda: list(values), what)
+
+
+# -- shared helpers -------------------------------------------------------------
+
+
+def _error_row(e: BaseException) -> dict:
+    return {"ok": False, "error_kind": type(e).__name__, "error": str(e)}
+
+
+def _solve_rows(solve: Callable[[dict, Any], Any], keys: list[str], rows: Any) -> Any:
+    """``solve(model, rows)`` for rows of one model; its ThermobearError
+    becomes every row's error."""
+    import polars as pl
+
+    try:
+        return solve({k: rows[k][0] for k in keys}, rows)
+    except ThermobearError as e:
+        err = _error_row(e)
+        return pl.DataFrame({k: [v] * rows.height for k, v in err.items()})
+
+
+def _grouped(kind: Kind, inputs: Any, solve: Callable[[dict, Any], Any]) -> Any:
+    """Group the rows by the model inputs, ``solve(model, rows)`` each group
+    and put the rows back in input order."""
+    import polars as pl
+
+    keys = [p.name for p in kind.params if not p.per_point]
+    if all(inputs[k].n_unique() == 1 for k in keys):  # one model: no regrouping
+        return _solve_rows(solve, keys, inputs)
+    frame = inputs.with_row_index("_row")
+    parts = [
+        _solve_rows(solve, keys, rows).with_columns(rows["_row"])
+        for _, rows in frame.group_by(keys, maintain_order=True)
+    ]
+    return pl.concat(parts, how="diagonal_relaxed").sort("_row").drop("_row")
+
+
+def _row_map(inputs: Any, threads: Optional[int], point: Callable[[dict], dict]) -> Any:
+    """``point(row) -> outputs`` over the rows in a thread pool (the native
+    calls release the GIL); a ThermobearError becomes the row's error."""
+    import polars as pl
+
+    def safe(row: dict) -> dict:
+        try:
+            return {**point(row), "ok": True, "error_kind": None, "error": None}
+        except ThermobearError as e:
+            return _error_row(e)
+
+    rows = inputs.to_dicts()
+    workers = max(1, min(len(rows), threads or _cpu_count()))
+    with ThreadPoolExecutor(max_workers=workers) as pool:
+        out = list(pool.map(safe, rows))
+    return pl.DataFrame(out, infer_schema_length=None)
+
+
+def _cpu_count() -> int:
+    import os
+
+    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+
+
+_BEARING_OUTPUTS = (
+    ("axial_stiffness_n_per_m", "Float64"),
+    ("radial_stiffness_n_per_m", "Float64"),
+    ("k_xx_n_per_m", "Float64"),
+    ("k_zz_n_per_m", "Float64"),
+    ("k_ryry_nm_per_rad", "Float64"),
+    ("axial_displacement_um", "Float64"),
+    ("radial_displacement_um", "Float64"),
+    ("tilt_rad", "Float64"),
+    ("inner_contact_angle_max_deg", "Float64"),
+    ("inner_contact_angle_min_deg", "Float64"),
+    ("outer_contact_angle_max_deg", "Float64"),
+    ("outer_contact_angle_min_deg", "Float64"),
+    ("inner_load_max_n", "Float64"),
+    ("outer_load_max_n", "Float64"),
+    ("centrifugal_force_n", "Float64"),
+    ("cage_speed_rpm", "Float64"),
+    ("residual", "Float64"),
+    ("iterations", "Int64"),
+)
+
+_LOADS = (
+    Param("speed_rpm", float, 0.0, "inner-ring (shaft) speed [rpm]", per_point=True),
+    Param("axial_n", float, 0.0, "external axial load [N]", per_point=True),
+    Param("preload_n", float, 0.0, "axial preload [N], added to axial_n", per_point=True),
+    Param("radial_n", float, 0.0, "radial load [N]", per_point=True),
+)
+
+
+def _loads(rows: Any) -> dict:
+    import polars as pl
+
+    return {
+        "speed_rpm": rows["speed_rpm"],
+        "axial_n": rows.select(pl.col("axial_n") + pl.col("preload_n")).to_series(),
+        "radial_n": rows["radial_n"],
+    }
+
+
+def _bearing_of(name: str) -> Any:
+    from ..bearing import Bearing
+
+    return Bearing.preset(str(name))
+
+
+# -- bearing ----------------------------------------------------------------------
+
+
+def _run_bearing(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
+    import polars as pl
+
+    def solve(model: dict, rows: Any) -> Any:
+        out = _bearing_of(model["bearing"]).solve_many(
+            pl.DataFrame(_loads(rows)),
+            raceway_control=model["raceway_control"],
+            misalignment_rad=model["misalignment_rad"],
+            threads=threads,
+        )
+        return out.drop("speed_rpm", "axial_n", "radial_n")
+
+    return _grouped(kind, inputs, solve)
+
+
+BEARING = Kind(
+    "bearing",
+    "quasi-static solve of one bearing at speed (ring tilt held at misalignment_rad)",
+    (
+        Param(
+            "bearing",
+            str,
+            "7008C",
+            "bearing preset (thermobear presets)",
+            check=_choice(_bearing_names, "bearing"),
+        ),
+        *_LOADS,
+        Param(
+            "raceway_control",
+            str,
+            "outer",
+            "'outer' or 'inner'",
+            check=_one_of("raceway_control", "outer", "inner"),
+        ),
+        Param("misalignment_rad", float, 0.0, "inner-ring tilt, held [rad]"),
+    ),
+    _BEARING_OUTPUTS,
+    _run_bearing,
+)
+
+
+# -- thermal ----------------------------------------------------------------------
+
+_THERMAL_OUTPUTS = _BEARING_OUTPUTS + (
+    ("shaft_temperature_c", "Float64"),
+    ("inner_ring_temperature_c", "Float64"),
+    ("ball_temperature_c", "Float64"),
+    ("outer_ring_temperature_c", "Float64"),
+    ("housing_temperature_c", "Float64"),
+    ("oil_temperature_c", "Float64"),
+    ("viscosity_cst", "Float64"),
+    ("heat_w", "Float64"),
+    ("load_heat_w", "Float64"),
+    ("viscous_heat_w", "Float64"),
+    ("spin_heat_w", "Float64"),
+    ("churning_w", "Float64"),
+    ("radial_thermal_offset_um", "Float64"),
+    ("axial_thermal_offset_um", "Float64"),
+    ("ball_growth_um", "Float64"),
+    ("centrifugal_expansion_um", "Float64"),
+    ("thermal_residual_k", "Float64"),
+    ("thermal_iterations", "Int64"),
+)
+
+
+def _run_thermal(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
+    import polars as pl
+
+    from ..thermal import thermal_state_many
+
+    def solve(model: dict, rows: Any) -> Any:
+        settings = {k: v for k, v in model.items() if k != "bearing"}
+        out = thermal_state_many(
+            _bearing_of(model["bearing"]), pl.DataFrame(_loads(rows)), threads=threads, **settings
+        )
+        return out.drop("speed_rpm", "axial_n", "radial_n")
+
+    return _grouped(kind, inputs, solve)
+
+
+THERMAL = Kind(
+    "thermal",
+    "coupled thermal steady state of one bearing in the seed A network",
+    (
+        Param("bearing", str, "7008C", "bearing preset", check=_choice(_bearing_names, "bearing")),
+        *_LOADS,
+        Param("lubricant", str, "e-drive ATF", "lubricant preset", check=_check_lubricant),
+        Param(
+            "housing_material",
+            str,
+            "aluminium",
+            "material preset of the housing",
+            check=_choice(_material_names, "housing_material"),
+        ),
+        # Default None: what the model takes without it (f0 = 1 or the
+        # lubrication method's; no drag heat or the method's oil fraction).
+        Param("lubrication_factor_f0", float, None, "Palmgren f0 [-]"),
+        Param("spin_friction", float, 0.06, "spin friction coefficient [-]"),
+        Param("oil_air_temperature_c", float, 28.0, "oil-air supply temperature [C]"),
+        Param("ambient_temperature_c", float, 26.0, "ambient temperature [C]"),
+        Param(
+            "raceway_control",
+            str,
+            "outer",
+            "'outer' or 'inner'",
+            check=_one_of("raceway_control", "outer", "inner"),
+        ),
+        Param("misalignment_rad", float, 0.0, "inner-ring tilt, held [rad]"),
+        Param("extra_heat_w", float, 0.0, "heat beyond the modelled friction [W]"),
+        Param("housing_conductance_scale", float, 1.0, "scale of the housing convection [-]"),
+        Param("churning_oil_fraction", float, None, "oil volume fraction of the oil-air mix [-]"),
+        Param(
+            "heat_model",
+            str,
+            "palmgren",
+            "'palmgren' or 'skf' friction heat",
+            check=_one_of("heat_model", "palmgren", "skf"),
+        ),
+        Param(
+            "lubrication",
+            str,
+            None,
+            "lubrication method (sets f0 and oil fraction)",
+            check=_check_lubrication,
+        ),
+    ),
+    _THERMAL_OUTPUTS,
+    _run_thermal,
+)
+
+
+# -- spindle ----------------------------------------------------------------------
+
+_SPINDLE_NODES = (
+    "shaft_front",
+    "rotor",
+    "shaft_rear",
+    "stator",
+    "front_inner",
+    "front_balls",
+    "front_outer",
+    "rear_inner",
+    "rear_balls",
+    "rear_outer",
+    "housing_front",
+    "sleeve",
+    "housing_rear",
+)
+_SPINDLE_OUTPUTS = tuple((f"{n}_c", "Float64") for n in _SPINDLE_NODES) + (
+    ("operating_preload_n", "Float64"),
+    ("rear_operating_preload_n", "Float64"),
+    ("spring_compression_um", "Float64"),
+    ("radial_displacement_um", "Float64"),
+    ("inner_contact_angle_deg", "Float64"),
+    ("outer_contact_angle_deg", "Float64"),
+    ("inner_load_max_n", "Float64"),
+    ("outer_load_max_n", "Float64"),
+    ("radial_stiffness_n_per_m", "Float64"),
+    ("axial_stiffness_n_per_m", "Float64"),
+    ("front_bearing_heat_w", "Float64"),
+    ("bearing_heat_w", "Float64"),
+    ("motor_losses_w", "Float64"),
+    ("total_heat_w", "Float64"),
+    ("axial_growth_um", "Float64"),
+    ("radial_thermal_displacement_um", "Float64"),
+    ("ball_growth_um", "Float64"),
+    ("iterations", "Int64"),
+)
+
+
+def _run_spindle(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
+    from ..spindle import Spindle
+
+    presets: dict[str, Any] = {}
+
+    def point(row: dict) -> dict:
+        name = row["spindle"]
+        base = presets.get(name) or presets.setdefault(name, Spindle.preset(name))
+        sp = base.with_options(
+            preload_n=row["preload_n"],
+            preload_kind=row["preload_kind"],
+            spring_rate_n_per_um=row["spring_rate_n_per_um"],
+            radial_load_n=row["radial_n"],
+            spin_friction=row["spin_friction"],
+        )
+        state = sp.thermal_state(row["speed_rpm"]).row(0, named=True)
+        return {k: state[k] for k, _ in _SPINDLE_OUTPUTS if k in state}
+
+    for name in inputs["spindle"].unique(maintain_order=True):
+        presets[name] = Spindle.preset(name)  # built once, before the threads
+    return _row_map(inputs, threads, point)
+
+
+SPINDLE = Kind(
+    "spindle",
+    "coupled thermal steady state of a motorized spindle (two bearing pairs)",
+    (
+        Param(
+            "spindle",
+            str,
+            "seed-ceramic-spindle",
+            "spindle preset",
+            check=_choice(_spindle_names, "spindle"),
+        ),
+        Param("speed_rpm", float, 10_000.0, "shaft speed [rpm]"),
+        # Default None: the preset's own value (null in the table).
+        Param("preload_n", float, None, "preload force [N]"),
+        Param("radial_n", float, None, "radial load at the nose [N]"),
+        Param(
+            "preload_kind",
+            str,
+            None,
+            "'rigid' or 'spring'",
+            check=_one_of("preload_kind", "rigid", "spring"),
+        ),
+        Param("spring_rate_n_per_um", float, None, "preload spring rate [N/um]"),
+        Param("spin_friction", float, None, "spin friction coefficient [-]"),
+    ),
+    _SPINDLE_OUTPUTS,
+    _run_spindle,
+)
+
+
+# -- gear ---------------------------------------------------------------------------
+
+
+def _run_gear(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
+    from ..bearing import Bearing
+    from ..gear import GearPair, GearSystem, regime_map
+
+    def point(row: dict) -> dict:
+        system = GearSystem(
+            GearPair.preset(row["gear"]),
+            Bearing.preset(row["bearing"]),
+            row["stiffness"],
+            backlash_total_um=row["backlash_total_um"],
+            mesh_damping_ratio=row["mesh_damping_ratio"],
+            te_amplitude_um=row["te_amplitude_um"],
+            torque_nm=row["torque_nm"],
+        )
+        cell = regime_map(
+            system,
+            [row["torque_nm"]],
+            [row["speed_rpm"]],
+            [1.0],
+            transient_periods=row["transient_periods"],
+            record_periods=row["record_periods"],
+            steps_per_period=row["steps_per_period"],
+        ).row(0, named=True)
+        return {k: cell[k] for k, _ in _GEAR_OUTPUTS}
+
+    return _row_map(inputs, threads, point)
+
+
+_GEAR_OUTPUTS = (
+    ("regime", "String"),
+    ("period", "Int64"),
+    ("impact", "String"),
+    ("amplitude_um", "Float64"),
+    ("mean_dte_um", "Float64"),
+    ("lyapunov_per_s", "Float64"),
+    ("settled", "Boolean"),
+)
+
+GEAR = Kind(
+    "gear",
+    "motion regime of the gear system at a speed (every cell from its static state)",
+    (
+        Param(
+            "gear",
+            str,
+            "seed-electric-drive",
+            "gear pair preset",
+            check=_choice(_gear_names, "gear"),
+        ),
+        Param(
+            "bearing",
+            str,
+            "6208",
+            "bearing preset of the shafts",
+            check=_choice(_bearing_names, "bearing"),
+        ),
+        Param(
+            "stiffness",
+            str,
+            "constant",
+            "bearing stiffness model: 'constant' or 'speed'",
+            check=_one_of("stiffness", "constant", "speed"),
+        ),
+        Param("speed_rpm", float, 3000.0, "pinion speed [rpm]"),
+        Param("torque_nm", float, 100.0, "input torque [N m]"),
+        Param("te_amplitude_um", float, 2.0, "transmission error amplitude [um]"),
+        Param("backlash_total_um", float, 100.0, "total backlash 2b [um]"),
+        Param("mesh_damping_ratio", float, 0.07, "mesh damping ratio [-]"),
+        Param("transient_periods", int, 300, "mesh periods discarded"),
+        Param("record_periods", int, 100, "mesh periods recorded"),
+        Param("steps_per_period", int, 128, "integration steps per mesh period"),
+    ),
+    _GEAR_OUTPUTS,
+    _run_gear,
+)
+
+KINDS: dict[str, Kind] = {k.name: k for k in (BEARING, THERMAL, SPINDLE, GEAR)}
+
+
+def kind_of(name: str) -> Kind:
+    if name not in KINDS:
+        raise ConfigError(f"invalid kind = {name!r}: known: {', '.join(KINDS)}")
+    return KINDS[name]
+
+
+def kinds_table() -> Any:
+    """Every kind's inputs: ``kind``, ``input``, ``type``, ``default``, ``doc``."""
+    import polars as pl
+
+    rows = [
+        {
+            "kind": k.name,
+            "input": p.name,
+            "type": p.type.__name__,
+            "default": "(the model's own)" if p.default is None else str(p.default),
+            "doc": p.doc,
+        }
+        for k in KINDS.values()
+        for p in k.params
+    ]
+    return pl.DataFrame(rows)
