@@ -277,14 +277,21 @@ pub(crate) fn rk4_kernel<V: Simd>(c: &Coef<V>, g0: &[V; 4], g1: &[V; 4], g2: &[V
     }
 }
 
+/// One half-step grid point of a batch: `[k_m, e + b, e - b, de/dt]` and the
+/// transmission error `e` (the observable), each per lane. Cache-line
+/// aligned, so no vector load of a row straddles two lines.
+#[derive(Debug, Clone, Copy)]
+#[repr(C, align(64))]
+struct GridRow<const L: usize> {
+    g: [[f64; L]; 4],
+    e: [f64; L],
+}
+
 /// `L` helical-pair systems with the same number of steps per mesh period.
 #[derive(Debug, Clone)]
 pub struct HelicalBatch<const L: usize> {
     coef: Coef<[f64; L]>,
-    /// `[k_m, e + b, e - b, de/dt]` per grid point and lane.
-    grid: Vec<[[f64; L]; 4]>,
-    /// Transmission error `e` per grid point and lane (the observable).
-    error: Vec<[f64; L]>,
+    grid: Vec<GridRow<L>>,
 }
 
 /// Batch state: `x[state][lane]`.
@@ -316,10 +323,12 @@ impl<const L: usize> HelicalBatch<L> {
             h6: c(&|k| k.h6),
         };
         let grid = (0..g)
-            .map(|j| std::array::from_fn(|r| lanes(&|s| s.kernel.grid[j][r])))
+            .map(|j| GridRow {
+                g: std::array::from_fn(|r| lanes(&|s| s.kernel.grid[j][r])),
+                e: lanes(&|s| s.coef[j][1]),
+            })
             .collect();
-        let error = (0..g).map(|j| lanes(&|s| s.coef[j][1])).collect();
-        Ok(HelicalBatch { coef, grid, error })
+        Ok(HelicalBatch { coef, grid })
     }
 
     /// Grid length (2 x steps per period).
@@ -340,7 +349,7 @@ impl<const L: usize> HelicalBatch<L> {
     fn step_v<V: Lanes<L>>(&self, c: &Coef<V>, n: usize, x: &mut [V; 14]) {
         let (j0, j1, j2) = stage_indices(n, self.grid.len());
         let row = |j: usize| -> [V; 4] {
-            let g = &self.grid[j];
+            let g = &self.grid[j].g;
             [V::load(&g[0]), V::load(&g[1]), V::load(&g[2]), V::load(&g[3])]
         };
         rk4_kernel(c, &row(j0), &row(j1), &row(j2), x);
@@ -354,7 +363,7 @@ impl<const L: usize> HelicalBatch<L> {
         for (ai, xi) in c.a.iter().zip(x).skip(1) {
             s = s.add(ai.mul(*xi));
         }
-        s.sub(V::load(&self.error[j]))
+        s.sub(V::load(&self.grid[j].e))
     }
 }
 
