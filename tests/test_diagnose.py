@@ -178,8 +178,10 @@ def test_hidden_spin_friction_switch_named(bearing, full_effects, baseline):
     ds = [tb.diagnose(base, _measured(baseline, 3000 + s)) for s in range(20)]
     named = sum([a["name"] for a in d.accepted] == ["spin_friction"] for d in ds)
     # spin friction and churning are look-alikes (cosine ~0.99): a tie that
-    # contains the true effect is honest, a wrong single name is not
-    tied = sum("spin_friction" in d.tie for d in ds)
+    # contains the true effect is honest, a wrong single name is not; so is
+    # "unresolved" (issue 12: spin friction heat, like an unknown heat source
+    # with a smooth speed law, the carrier control)
+    tied = sum("spin_friction" in d.tie + [a["name"] for a in d.unresolved] for d in ds)
     wrong = sum(bool(d.accepted) and d.accepted[0]["name"] != "spin_friction" for d in ds)
     assert named >= 15 and named + tied >= 19 and wrong <= 1
 

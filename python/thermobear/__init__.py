@@ -38,8 +38,10 @@ from .bearing import Bearing, BearingSolution, Material
 from .config import load_config, seed_config, seed_config_names
 from .diagnosis import (
     BearingModelSpec,
+    Calibration,
     Diagnosis,
     SpindleModelSpec,
+    calibrate,
     candidates,
     diagnose,
     diagnose_spindle,
@@ -153,8 +155,10 @@ __all__ = [
     # diagnosis
     "effects",
     "BearingModelSpec",
+    "Calibration",
     "Diagnosis",
     "SpindleModelSpec",
+    "calibrate",
     "candidates",
     "diagnose",
     "diagnose_spindle",

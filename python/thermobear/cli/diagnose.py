@@ -65,6 +65,9 @@ def diagnose_files(
         files += write_table(d.audit, out, "diagnosis_audit")
         files += write_table(pl.concat(d.screening, how="diagonal"), out, "diagnosis_screening")
         files += write_table(d.points, out, "diagnosis_points")
+        for name, table in (("diagnosis_ties", d.ties), ("diagnosis_outliers", d.outliers)):
+            if table is not None and table.height:
+                files += write_table(table, out, name)
         for i, q in enumerate(sorted(set(d.points["quantity"].to_list()))):
             files.append(save_figure(plot.diagnosis_fit(d, q), out, f"diagnosis_fit_{i}"))
         files.append(save_figure(plot.diagnosis_residuals(d), out, "diagnosis_residuals"))

@@ -12,10 +12,14 @@ gap shrink -- and refuse to name one the data cannot support.
 * :mod:`.identifiability` -- fingerprints, look-alike pairs, the extra
   measurement that separates them;
 * :mod:`.screening` -- each candidate calibrated alone and scored (BIC,
-  held-out chi^2, 95 % interval);
+  AICc, cross-validated chi^2, the extrapolation check, 95 % profile
+  interval); :mod:`.control` -- the generic smooth control;
+* :mod:`.outliers` -- the robust outlier audit;
+* :mod:`.ties` -- each tie member's calibration and gap;
 * :mod:`.acceptance` -- the best candidate, ties, the joint refit;
 * :mod:`.verdict` -- the verdict in words; :mod:`.result` -- :class:`Diagnosis`;
-* :mod:`.workflow` -- :func:`diagnose`, the sequence of the steps.
+* :mod:`.workflow` -- :func:`diagnose`, the sequence of the steps;
+* :mod:`.joint` -- :func:`calibrate`, joint calibration over data sets.
 
 The machines behind the protocol of :mod:`.protocol`: one bearing
 (:mod:`.bearing_spec`) and the seed B spindle (:mod:`.spindle_spec`).
@@ -23,6 +27,7 @@ The machines behind the protocol of :mod:`.protocol`: one bearing
 
 from .bearing_spec import BearingModelSpec, model_from_toml
 from .candidates import Candidate, candidates, sensor_offset_candidates
+from .joint import Calibration, calibrate
 from .measurements import QUANTITIES, load_measurements, synthetic_measurements, typical_sigma
 from .protocol import ModelSpec
 from .registry import NOT_IN_BEARING, effect_registry
@@ -44,11 +49,13 @@ __all__ = [
     "SPINDLE_QUANTITIES",
     "THERMAL_DISPLACEMENT_EFFECTS",
     "BearingModelSpec",
+    "Calibration",
     "Candidate",
     "Diagnosis",
     "ModelSpec",
     "NOT_IN_BEARING",
     "SpindleModelSpec",
+    "calibrate",
     "candidates",
     "diagnose",
     "diagnose_spindle",

@@ -11,13 +11,19 @@ import numpy as np
 from ..errors import ThermobearError
 from .candidates import Candidate
 from .setting import _predict, _Setting
+from .statistics import fisher_identifiability
+from .ties import tie_members
 
 
 def joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_options):
     """Re-calibrate every accepted continuous parameter together (bounded
     least squares on the model itself, not the interpolant) once two or more
     are accepted: an effect calibrated alone absorbs part of the next one.
-    Intervals: +-1.96 standard errors from the Jacobian, (J^T J)^-1.
+    Intervals: +-1.96 standard errors from the Jacobian, (J^T J)^-1 scaled
+    by phi = max(1, reduced chi^2) (the linearised profile: exact for the
+    additive offsets, a close approximation near the optimum otherwise);
+    ``identified``: False for a parameter the Fisher information does not
+    identify (:func:`~.statistics.fisher_identifiability`).
     Updates ``accepted`` in place; returns (setting, prediction) or None."""
     from scipy.optimize import least_squares
 
@@ -50,13 +56,16 @@ def joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_option
         cov = np.linalg.inv(res.jac.T @ res.jac)
     except (ThermobearError, np.linalg.LinAlgError):
         return None
-    se = np.sqrt(np.clip(np.diag(cov), 0.0, None))
+    phi = max(1.0, 2.0 * float(res.cost) / max(int(train.sum()) - len(idx), 1))
+    se = np.sqrt(np.clip(np.diag(cov), 0.0, None) * phi)
+    _, weak = fisher_identifiability(res.jac, hi - lo)
     for k, i in enumerate(idx):
         accepted[i].update(
             value=float(res.x[k]),
             lower_95=float(max(lo[k], res.x[k] - 1.96 * se[k])),
             upper_95=float(min(hi[k], res.x[k] + 1.96 * se[k])),
             joint=True,
+            identified=k not in weak,
         )
     st = setting(res.x)
     return st, _predict(model, st, cond, quantity)
@@ -64,20 +73,15 @@ def joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_option
 
 def select(rows: list, tie_delta_bic: float) -> tuple[Optional[dict], list]:
     """The best passing screening row (largest delta-BIC; None when no row
-    passes) and its rivals: every other candidate -- passing or not -- whose
-    delta-BIC is less than ``tie_delta_bic`` below the best's (a higher one
-    included), which make a tie set."""
+    passes) and its rivals (:func:`~.ties.tie_members`): every other named
+    candidate -- passing or not -- whose delta-BIC is less than
+    ``tie_delta_bic`` below the best's (a higher one included), unless it
+    sits at a bound of its range; they make a tie set."""
     passing = [row for row in rows if row["passes"]]
     if not passing:
         return None, []
     best = max(passing, key=lambda row: row["delta_bic"])
-    rivals = [
-        row["candidate"]
-        for row in rows
-        if row["candidate"] != best["candidate"]
-        and best["delta_bic"] - row["delta_bic"] < tie_delta_bic
-    ]
-    return best, rivals
+    return best, tie_members(rows, best, tie_delta_bic)
 
 
 def accepted_record(c: Candidate, best: dict, rnd: int) -> dict:

@@ -222,12 +222,38 @@ def holdout_mask(df, holdout) -> np.ndarray:
     return mask
 
 
+#: At most this many cross-validation folds (operating cells beyond it share folds).
+MAX_FOLDS = 20
+
+
+def cv_folds(df) -> np.ndarray:
+    """Cross-validation fold of each row: one fold per operating cell (a
+    speed, load and run: every quantity measured there is held out
+    together, so a fold removes a whole condition, not one sensor), cells in
+    order of speed, then load and run; beyond :data:`MAX_FOLDS` cells the
+    folds take the cells in turn (interleaved, so that every fold spans the
+    speed range)."""
+    keys = list(
+        zip(
+            df["speed_rpm"].to_list(),
+            df["axial_n"].to_list(),
+            df["radial_n"].to_list(),
+            df["run"].to_list(),
+            strict=False,
+        )
+    )
+    cells = sorted(set(keys))
+    index = {k: i % MAX_FOLDS for i, k in enumerate(cells)}
+    return np.array([index[k] for k in keys], dtype=int)
+
+
 @dataclass(frozen=True)
 class MeasuredData:
     """The checked measurements of one diagnosis: the tidy table ``df``,
     each row's ``quantity``, value ``y`` and ``sigma`` ``s``, the operating
-    conditions ``cond`` (``speed_rpm``, ``axial_n``, ``radial_n``) and the
-    held-out mask ``held``."""
+    conditions ``cond`` (``speed_rpm``, ``axial_n``, ``radial_n``), the
+    held-out mask ``held`` (the extrapolation check), the cross-validation
+    ``folds`` (:func:`cv_folds`) and whether the table gave its sigmas."""
 
     df: Any
     quantity: np.ndarray
@@ -235,25 +261,47 @@ class MeasuredData:
     s: np.ndarray
     cond: Any
     held: np.ndarray
+    folds: np.ndarray
+    sigma_given: bool = True
 
     @property
     def train(self) -> np.ndarray:
-        """The training points (not held out)."""
+        """The training points of the extrapolation check (not held out)."""
         return ~self.held
 
     @property
     def n_train(self) -> int:
         return int(self.train.sum())
 
+    @property
+    def n(self) -> int:
+        return len(self.y)
+
     def residual(self, pred: np.ndarray) -> np.ndarray:
         """(value - prediction) / sigma of every row."""
         return (self.y - pred) / self.s
 
+    def subset(self, keep: np.ndarray) -> "MeasuredData":
+        """The rows of ``keep`` (a boolean mask), folds renumbered."""
+        df = self.df.filter(keep)
+        return MeasuredData(
+            df,
+            self.quantity[keep],
+            self.y[keep],
+            self.s[keep],
+            self.cond.filter(keep),
+            self.held[keep],
+            cv_folds(df),
+            self.sigma_given,
+        )
+
 
 def prepare_measurements(measured: Any, quantities: dict, holdout: Any) -> MeasuredData:
     """Step 0: read and check ``measured`` against a quantity registry
-    (:func:`load_measurements`) and split off the held-out points
-    (:func:`holdout_mask`)."""
+    (:func:`load_measurements`), split off the held-out points of the
+    extrapolation check (:func:`holdout_mask`) and assign the
+    cross-validation folds (:func:`cv_folds`)."""
+    given = _has_sigma(measured)
     df = load_measurements(measured, quantities)
     return MeasuredData(
         df,
@@ -262,4 +310,16 @@ def prepare_measurements(measured: Any, quantities: dict, holdout: Any) -> Measu
         df["sigma"].to_numpy(),
         df.select(["speed_rpm", "axial_n", "radial_n"]),
         holdout_mask(df, holdout),
+        cv_folds(df),
+        given,
     )
+
+
+def _has_sigma(measured: Any) -> bool:
+    """Whether a measured table (frame or path) has a ``sigma`` column."""
+    if isinstance(measured, (str, Path)):
+        try:
+            return "sigma" in _read_table(measured).columns
+        except DataError:
+            return True  # load_measurements reports the unreadable file
+    return "sigma" in list(getattr(measured, "columns", []))

@@ -1,7 +1,9 @@
 """Step 3 of :func:`thermobear.diagnose`: each candidate added alone to
-the baseline and calibrated within its bounds on the training points --
-its prediction curve over a grid of values, the calibrated value, the 95 %
-profile interval, BIC and the held-out chi^2."""
+the baseline and calibrated within its bounds on all the points -- its
+prediction curve over a grid of values, the calibrated value, the 95 %
+profile-likelihood interval, BIC and AICc, the cross-validated chi^2 (folds
+of operating cells) and, reported apart, the extrapolation check (held-out
+top speeds or runs)."""
 
 from __future__ import annotations
 
@@ -21,6 +23,10 @@ _DENSE = 601
 
 
 _CHI2_95 = 3.841  # chi^2(1) 95 % quantile: profile interval
+
+#: A calibrated value within this fraction of the span from a bound sits
+#: at the bound (the dense grid's spacing is 1/600 of the span).
+_AT_BOUND = 2e-3
 
 
 @dataclass
@@ -84,49 +90,56 @@ def _curve(model, st, c, cond, quantity, base_options) -> Optional[_Curve]:
     return _Curve(c, np.asarray(good), np.asarray(preds))
 
 
-def _fit(curve: _Curve, y, s, train) -> dict:
+def _dense(curve: _Curve) -> tuple[np.ndarray, np.ndarray]:
+    """The dense parameter grid over the curve's values and the
+    interpolated predictions on it (``(_DENSE, n_rows)``)."""
+    grid = np.linspace(curve.values.min(), curve.values.max(), _DENSE)
+    return grid, curve.at(grid)
+
+
+def _switch_fit(curve: _Curve, y, s, mask) -> dict:
+    r = (y - curve.preds[-1]) / s
+    return {
+        "value": 1.0,
+        "chi2": _chi2(r[mask]),
+        "lower_95": None,
+        "upper_95": None,
+        "pred": curve.preds[-1],
+        "at_bound": False,
+        "excludes_null": True,
+        "phi": 1.0,
+    }
+
+
+def _fit(curve: _Curve, y, s, mask, dense=None) -> dict:
+    """The candidate calibrated on the rows of ``mask``: the least chi^2
+    over its bounds (dense grid, then bounded refinement on the
+    interpolant) and its 95 % profile-likelihood interval: the values whose
+    chi^2 exceeds the minimum by less than 3.84 phi, phi = max(1, reduced
+    chi^2 of the fit) -- the interval widens when the residual left is
+    larger than the stated sigma explain (the stated sigma too small, or
+    structure the candidate does not explain)."""
     c = curve.cand
     if c.kind == "switch":
-        r = (y - curve.preds[-1]) / s
-        return {
-            "value": 1.0,
-            "chi2": _chi2(r[train]),
-            "lower_95": None,
-            "upper_95": None,
-            "pred": curve.preds[-1],
-            "at_bound": False,
-            "excludes_null": True,
-        }
-    lo, hi = curve.values.min(), curve.values.max()
-    grid = np.linspace(lo, hi, _DENSE)
-    p = curve.at(grid)
-    chi = np.sum(((y[train] - p[:, train]) / s[train]) ** 2, axis=1)
+        return _switch_fit(curve, y, s, mask)
+    grid, p = dense if dense is not None else _dense(curve)
+    lo, hi = grid[0], grid[-1]
+    chi = np.sum(((y[mask] - p[:, mask]) / s[mask]) ** 2, axis=1)
     i = int(np.argmin(chi))
-    from scipy.optimize import minimize_scalar
 
-    a, b = grid[max(i - 1, 0)], grid[min(i + 1, _DENSE - 1)]
-    best_v, best_c = grid[i], chi[i]
-    if b > a:
-        res = minimize_scalar(
-            lambda v: float(
-                np.sum(((y[train] - curve.at(np.array([v]))[0][train]) / s[train]) ** 2)
-            ),
-            bounds=(a, b),
-            method="bounded",
-            options={"xatol": (hi - lo) * 1e-6},
-        )
-        if res.fun < best_c:
-            best_v, best_c = float(res.x), float(res.fun)
+    def chi_at(v: float) -> float:
+        return float(np.sum(((y[mask] - curve.at(np.array([v]))[0][mask]) / s[mask]) ** 2))
 
-    # contiguous 95 % profile interval around the best value; the edges are
-    # refined by root finding on the interpolant (the dense grid is coarse)
+    best_v, best_c = _refine(chi_at, grid, i, chi[i], (hi - lo) * 1e-6)
+    phi = max(1.0, best_c / max(int(mask.sum()) - 1, 1))
+    thr = _CHI2_95 * phi
+
     def excess(v: float) -> float:
-        p1 = curve.at(np.array([v]))[0]
-        return float(np.sum(((y[train] - p1[train]) / s[train]) ** 2)) - best_c - _CHI2_95
+        return chi_at(v) - best_c - thr
 
-    lo95 = _profile_edge(excess, grid, chi, best_v, best_c, -1)
-    hi95 = _profile_edge(excess, grid, chi, best_v, best_c, +1)
-    tol = (hi - lo) * 0.01
+    lo95 = _profile_edge(excess, grid, chi, best_v, best_c, -1, thr)
+    hi95 = _profile_edge(excess, grid, chi, best_v, best_c, +1, thr)
+    tol = (hi - lo) * _AT_BOUND
     return {
         "value": float(best_v),
         "chi2": float(best_c),
@@ -135,18 +148,76 @@ def _fit(curve: _Curve, y, s, train) -> dict:
         "pred": curve.at(np.array([best_v]))[0],
         "at_bound": bool(best_v <= lo + tol or best_v >= hi - tol),
         "excludes_null": bool(not (lo95 <= c.null <= hi95)),
+        "phi": phi,
     }
 
 
-def _profile_edge(excess, grid, chi, best_v, best_c, direction) -> float:
+def _refine(chi_at, grid, i, chi_i, xatol) -> tuple[float, float]:
+    """Bounded scalar minimisation of ``chi_at`` between the dense-grid
+    neighbours of its best grid point ``i``."""
+    from scipy.optimize import minimize_scalar
+
+    a, b = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
+    best_v, best_c = float(grid[i]), float(chi_i)
+    if b > a:
+        res = minimize_scalar(chi_at, bounds=(a, b), method="bounded", options={"xatol": xatol})
+        if res.fun < best_c:
+            best_v, best_c = float(res.x), float(res.fun)
+    return best_v, best_c
+
+
+def _sq_residuals(curve: _Curve, y, s, dense=None) -> np.ndarray:
+    """Squared residuals (in sigma) of every row at every dense-grid value."""
+    _, p = dense if dense is not None else _dense(curve)
+    return ((y - p) / s) ** 2
+
+
+def cv_chi2(curve: _Curve, y, s, folds, dense=None, r2=None) -> tuple[float, int]:
+    """Cross-validated chi^2 of a candidate and the number of folds that
+    test it: for each fold, the parameter calibrated on the other folds
+    (dense-grid minimum) predicts the fold; the sum over the folds. A fold
+    tests the candidate only when the candidate moves both its training
+    and its held-out points; an untested fold keeps the setting's chi^2
+    (the null value's). A switch has no parameter: its chi^2, every fold."""
+    if curve.cand.kind == "switch":
+        return _chi2((y - curve.preds[-1]) / s), len(np.unique(folds))
+    _, p = dense if dense is not None else _dense(curve)
+    r2 = _sq_residuals(curve, y, s, dense) if r2 is None else r2
+    r2_null = ((y - curve.at(np.array([curve.cand.null]))[0]) / s) ** 2
+    moves = np.ptp(p, axis=0) / s > 1e-9
+    total, tested = 0.0, 0
+    for f in np.unique(folds):
+        held = folds == f
+        train = ~held
+        if moves[train].any() and moves[held].any():
+            i = int(np.argmin(r2[:, train].sum(axis=1)))
+            total += float(r2[i, held].sum())
+            tested += 1
+        else:
+            total += float(r2_null[held].sum())
+    return total, tested
+
+
+def extrapolation_chi2(curve: _Curve, y, s, train, dense=None, r2=None) -> float:
+    """Chi^2 on the held-out points (``~train``) of the candidate
+    calibrated on the training points only (dense-grid minimum)."""
+    held = ~train
+    if curve.cand.kind == "switch":
+        return _chi2(((y - curve.preds[-1]) / s)[held])
+    r2 = _sq_residuals(curve, y, s, dense) if r2 is None else r2
+    i = int(np.argmin(r2[:, train].sum(axis=1)))
+    return float(r2[i, held].sum())
+
+
+def _profile_edge(excess, grid, chi, best_v, best_c, direction, thr=_CHI2_95) -> float:
     """Edge of the contiguous 95 % profile interval around ``best_v`` on one
     side: the nearest dense-grid point beyond which chi^2 exceeds the
-    minimum by 3.84 brackets the root of ``excess`` with the last point
+    minimum by ``thr`` (3.84 phi) brackets the root of ``excess`` with the last point
     inside (or ``best_v`` itself when the interval is narrower than the
     grid spacing); the interval reaches the bound when no point is outside."""
     from scipy.optimize import brentq
 
-    out = chi > best_c + _CHI2_95
+    out = chi > best_c + thr
     side = grid < best_v if direction < 0 else grid > best_v
     idx = np.flatnonzero(out & side)
     if idx.size == 0:
@@ -180,29 +251,49 @@ def candidate_curves(model, st, pool, data, base_options):
     return curves, dropped, notes
 
 
-def screen(curves, data, chi_base, chi_held, delta_bic_min):
-    """One screening round: each curve calibrated alone on the training
-    points (:func:`_fit`) and scored against the baseline's training chi^2
-    ``chi_base`` and held-out chi^2 ``chi_held``. A row passes with
-    delta-BIC >= ``delta_bic_min``, the held-out chi^2 improved and (for a
-    parameter) a 95 % interval inside the bounds that excludes the null
-    value. Returns (rows, fits by name)."""
+def screen(curves, data, chi_base, chi_held, delta_bic_min, k_accepted: int = 0):
+    """One screening round: each curve calibrated alone on all the points
+    (:func:`_fit`) and scored against the current setting's chi^2
+    ``chi_base`` (all points) and held-out chi^2 ``chi_held``; ``k_accepted``
+    parameters are in the setting already (for AICc). A row passes with
+    delta-BIC >= ``delta_bic_min``, a lower cross-validated chi^2 than the
+    setting's (:func:`cv_chi2`) and (for a parameter) a 95 % interval inside
+    the bounds that excludes the null value. The extrapolation check
+    (calibrated without the held-out points, :func:`extrapolation_chi2`) is
+    reported, not required. Returns (rows, fits by name)."""
     rows, fits = [], {}
+    everything = np.ones(data.n, dtype=bool)
     for name, cu in curves.items():
-        f = _fit(cu, data.y, data.s, data.train)
+        dense = r2 = None
+        if cu.cand.kind != "switch":
+            dense = _dense(cu)
+            r2 = _sq_residuals(cu, data.y, data.s, dense)
+        f = _fit(cu, data.y, data.s, everything, dense)
+        f["cv_chi2"], f["cv_folds"] = cv_chi2(cu, data.y, data.s, data.folds, dense, r2)
+        f["held_chi2"] = (
+            extrapolation_chi2(cu, data.y, data.s, data.train, dense, r2)
+            if data.held.any()
+            else 0.0
+        )
         fits[name] = f
-        rows.append(_screen_row(cu.cand, f, data, chi_base, chi_held, delta_bic_min))
+        rows.append(_screen_row(cu.cand, f, data, chi_base, chi_held, delta_bic_min, k_accepted))
     return rows, fits
 
 
-def _screen_row(c, f, data, chi_base, chi_held, delta_bic_min) -> dict:
-    held = data.held
-    rr = (data.y - f["pred"]) / data.s
-    bic = f["chi2"] + np.log(data.n_train)
-    held_after = _chi2(rr[held]) if held.any() else 0.0
-    held_ok = (held_after < chi_held) if held.any() else True
-    dbic = chi_base - bic
+def aicc_penalty(k: int, n: int) -> float:
+    """AICc's penalty of ``k`` parameters on ``n`` points: 2k + 2k(k+1)/(n-k-1)
+    (infinite when n <= k + 1)."""
+    return 2.0 * k + (2.0 * k * (k + 1) / (n - k - 1) if n > k + 1 else np.inf)
+
+
+def _screen_row(c, f, data, chi_base, chi_held, delta_bic_min, k_accepted=0) -> dict:
+    n, k = data.n, 1  # a switch counts as one parameter (a model choice), like a value
+    dbic = chi_base - f["chi2"] - k * np.log(n)
+    daicc = chi_base - f["chi2"] + aicc_penalty(k_accepted, n) - aicc_penalty(k_accepted + k, n)
     interval_ok = c.kind == "switch" or (f["excludes_null"] and not f["at_bound"])
+    # no fold can test a candidate whose effect sits in one operating cell:
+    # the cross-validation has nothing to say, BIC and the interval decide
+    cv_ok = f["cv_chi2"] < chi_base or f["cv_folds"] == 0
     return {
         "candidate": c.name,
         "kind": c.kind,
@@ -211,11 +302,17 @@ def _screen_row(c, f, data, chi_base, chi_held, delta_bic_min) -> dict:
         "lower_95": f["lower_95"],
         "upper_95": f["upper_95"],
         "null": c.null,
-        "chi2_train": f["chi2"],
+        "at_bound": f["at_bound"],
+        "chi2": f["chi2"],
+        "n_parameters": k,
         "delta_bic": dbic,
+        "delta_aicc": daicc,
+        "cv_chi2_before": chi_base,
+        "cv_chi2_after": f["cv_chi2"],
+        "cv_folds": f["cv_folds"],
         "heldout_chi2_before": chi_held,
-        "heldout_chi2_after": held_after,
-        "passes": bool(dbic >= delta_bic_min and held_ok and interval_ok),
+        "heldout_chi2_after": f["held_chi2"],
+        "passes": bool(dbic >= delta_bic_min and cv_ok and interval_ok),
     }
 
 
@@ -226,5 +323,12 @@ def screening_table(rows: list, rnd: int) -> Any:
 
     if not rows:
         return pl.DataFrame()
-    table = pl.DataFrame(rows).sort("delta_bic", descending=True)
+    floats = (
+        "value", "lower_95", "upper_95", "null", "chi2", "delta_bic", "delta_aicc",
+        "cv_chi2_before", "cv_chi2_after", "heldout_chi2_before", "heldout_chi2_after",
+    )  # fmt: skip
+    table = pl.DataFrame(rows).with_columns(
+        [pl.col(c).cast(pl.Float64) for c in floats if c in rows[0]]
+    )
+    table = table.sort("delta_bic", descending=True)
     return table.with_columns(pl.lit(rnd + 1).alias("round"))

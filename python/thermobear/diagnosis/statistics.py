@@ -1,5 +1,6 @@
 """Statistics shared by the steps: chi^2, speed bands, the residual's shape
-against speed (AIC), cosine similarity."""
+against speed (AIC), cosine similarity, the chi^2 test, identifiability
+from the Fisher information."""
 
 from __future__ import annotations
 
@@ -66,3 +67,33 @@ def noise_p_value(chi2: float, n: int) -> float:
     from scipy.stats import chi2 as chi2_dist
 
     return float(chi2_dist.sf(chi2, n))
+
+
+#: Fisher information condition number (correlation form) above which a
+#: combination of parameters counts as not identified.
+COND_MAX = 1e6
+
+
+def fisher_identifiability(jac: np.ndarray, spans: np.ndarray) -> tuple[float, set]:
+    """Identifiability from the Jacobian of residual/sigma against the
+    parameters: the Fisher information J^T J with the parameters scaled by
+    their bound ``spans``, in correlation form (unit diagonal). Returns its
+    condition number and the indices it does not identify: a parameter no
+    point moves (zero diagonal), or one with a large share (|v| > 0.3) of
+    an eigenvector whose eigenvalue is below 1/:data:`COND_MAX` of the
+    largest."""
+    js = jac * spans[None, :]
+    f = js.T @ js
+    dg = np.diag(f)
+    weak = set(np.flatnonzero(dg <= 1e-12 * max(float(dg.max()), 1e-300)).tolist())
+    ok = np.array([i not in weak for i in range(len(dg))])
+    if ok.sum() == 0:
+        return float("inf"), weak
+    sub = f[np.ix_(ok, ok)]
+    corr = sub / np.sqrt(np.outer(np.diag(sub), np.diag(sub)))
+    w, v = np.linalg.eigh(corr)
+    cond = float(w[-1] / max(w[0], 1e-300))
+    idx = np.flatnonzero(ok)
+    for k in np.flatnonzero(w < w[-1] / COND_MAX):
+        weak |= set(idx[np.abs(v[:, k]) > 0.3].tolist())
+    return cond, weak

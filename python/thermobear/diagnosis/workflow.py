@@ -14,20 +14,28 @@ this package):
    pairwise cosine similarity, look-alike pairs (|cos| > 0.95) and the
    quantity/speed (on a speed grid over all supported quantities) where
    the two best-matched fingerprints differ most;
-3. screening: each candidate added alone to the baseline and calibrated
-   within its bounds on the training points, scored by BIC = chi^2 + k ln n
-   and by chi^2 on held-out points (highest speeds or given runs);
-4. acceptance: delta-BIC >= 10 against the baseline, held-out chi^2
-   improved, the 95 % profile interval (chi^2 rise 3.84) inside the bounds
-   and excluding the null value, no rival within delta-BIC 2 (else a tie
-   set). Accepted effects join the baseline and the screening repeats while
-   the reduced chi^2 of the training residual fails the chi^2 test at 1 %;
+3. screening: each candidate added alone to the setting and calibrated
+   within its bounds on all points, scored by BIC = chi^2 + k ln n (n: all
+   points, k = 1 per candidate) and AICc, by the cross-validated chi^2
+   (folds of operating cells: a speed at a load in a run), and, reported
+   apart, by the extrapolation check (calibrated without the held-out
+   points -- highest speeds or given runs -- and scored on them);
+4. acceptance: delta-BIC >= 10 against the setting, the cross-validated
+   chi^2 improved, the 95 % profile interval (chi^2 rise 3.84 phi, phi =
+   max(1, reduced chi^2)) inside the bounds and excluding the null value,
+   no rival in a tie (:mod:`.ties`: within delta-BIC 2, or a lead noise
+   could produce; a rival at its bound is none). Accepted effects join the
+   setting and the screening repeats while the residual fails the chi^2
+   test at 1 %. Then the generic control (:mod:`.control`) is compared with
+   what was accepted, and the outlier audit (:mod:`.outliers`) runs on the
+   best fit: flagged points are left out and the search runs again;
 5. a verdict that says what each accepted candidate is: a missing effect
    (a registry switch or a term the baseline leaves out), a miscalibrated
    baseline input (f0, spin friction coefficient, cooling and ambient
    temperatures, housing material), or a measurement-side sensor offset;
-   a tie set; "no missing effect supported"; or "structured residual not
-   explained by any known effect";
+   a tie set; "unresolved" (a known effect the data cannot tell from an
+   unknown smooth one); "no missing effect supported"; or "structured
+   residual not explained by any known effect" -- and the outliers left out;
 6. the held-out gap before/after per quantity and speed band.
 
 Model specs: :class:`BearingModelSpec` (one bearing, quantities
@@ -55,27 +63,42 @@ import numpy as np
 from .acceptance import accepted_record, joint_refit, select
 from .audit import audit, gap_table
 from .candidates import Candidate, candidate_pool, split_evaluable
+from .control import (
+    CARRIERS,
+    CONTROL_MARGIN,
+    GenericControl,
+    control_matches,
+    control_row,
+    generic_control,
+)
 from .identifiability import identifiability
 from .measurements import MeasuredData, prepare_measurements
+from .outliers import flag_outliers, outlier_table
 from .protocol import ModelSpec, check_spec
 from .result import Diagnosis
-from .screening import candidate_curves, screen, screening_table
+from .screening import _curve, _fit, candidate_curves, screen, screening_table
 from .setting import _predict, _Setting
 from .statistics import _chi2, noise_p_value
+from .ties import significant_rivals, tie_gap, tie_table
 from .verdict import verdict_text
 
 __all__ = ["diagnose"]
 
+#: Passes of the outlier audit (flag, refit without, audit the refit once more).
+_OUTLIER_PASSES = 2
+
 
 @dataclass(frozen=True)
 class _Rules:
-    """The decision thresholds of :func:`diagnose`."""
+    """The decision thresholds and switches of :func:`diagnose`."""
 
     max_rounds: int
     delta_bic_min: float
     tie_delta_bic: float
     lookalike_cosine: float
     suggest: bool
+    envelope: Optional[dict] = None
+    control: bool = True
 
 
 @dataclass
@@ -93,6 +116,10 @@ class _Search:
     accepted: list = field(default_factory=list)
     accepted_cands: list = field(default_factory=list)
     tie: list = field(default_factory=list)
+    ties: Any = None
+    tie_gap: Any = None
+    unresolved: Optional[tuple[list, float, GenericControl]] = None
+    carriers: dict = field(default_factory=dict)
     screening: list = field(default_factory=list)
     fingerprints: Any = None
     lookalikes: Any = None
@@ -111,47 +138,92 @@ def diagnose(
     tie_delta_bic: float = 2.0,
     lookalike_cosine: float = 0.95,
     suggest: bool = True,
+    envelope: Optional[dict] = None,
+    outliers: bool = True,
+    control: bool = True,
 ) -> Diagnosis:
     """Diagnose the gap between ``model`` (a :class:`BearingModelSpec`,
     the baseline) and ``measured`` (anything :func:`load_measurements`
     reads). ``candidates``: names from :func:`candidates` (default: all of
     them, with a sensor-offset decoy per measured quantity); ``holdout``:
-    ``"highest_speeds"`` (the top quarter of the distinct speeds), a fraction
-    of the distinct speeds, run label(s), or None. See the module docstring
-    for the statistics; returns a :class:`Diagnosis`.
-
-    The steps: the measurements (:func:`prepare_measurements`), the
-    candidate pool (:func:`candidate_pool`), the baseline's residual audit
-    (:func:`audit`), screening rounds (:func:`_screening_round`: curves,
-    identifiability, screening, acceptance) while the residual is above
-    noise, then the verdict and the held-out gap (:func:`_conclude`)."""
+    the points of the extrapolation check -- ``"highest_speeds"`` (the top
+    quarter of the distinct speeds), a fraction of the distinct speeds, run
+    label(s), or None; ``envelope``: the operating range where an extra
+    measurement can be made (``{"speed_rpm": (lo, hi), "axial_n": (lo,
+    hi)}``; default: the measured range); ``outliers``: run the robust
+    outlier audit (:mod:`.outliers`); ``control``: compare the best named
+    candidate with the generic smooth control (:mod:`.control`). See the
+    module docstring for the statistics; returns a :class:`Diagnosis`."""
     check_spec(model)
-    rules = _Rules(max_rounds, delta_bic_min, tie_delta_bic, lookalike_cosine, suggest)
-    data = prepare_measurements(measured, model.quantities, holdout)
-    pool = candidate_pool(model, data.quantity, candidates)
-    # the spec already carries the baseline effects and options; a setting adds to them
-    pred0 = _predict(model, _Setting(), data.cond, data.quantity)
-    baseline_audit = audit(data.df, data.residual(pred0))
+    rules = _Rules(
+        max_rounds, delta_bic_min, tie_delta_bic, lookalike_cosine, suggest, envelope, control
+    )
+    full = prepare_measurements(measured, model.quantities, holdout)
+    pool = candidate_pool(model, full.quantity, candidates)
     pool, outside = split_evaluable(pool)
-    search = _Search(model, data, dict(model.options), pool, pred0, not_evaluable=outside)
-    if outside:
-        search.notes.append("not in the single-bearing model: " + ", ".join(outside))
-    for rnd in range(rules.max_rounds):
-        if not _screening_round(search, rnd, rules):
+    # the spec already carries the baseline effects and options; a setting adds to them
+    pred0 = _predict(model, _Setting(), full.cond, full.quantity)
+    baseline_audit = audit(full.df, full.residual(pred0))
+    keep = np.ones(full.n, dtype=bool)
+    z = np.zeros(full.n)
+    for _ in range(_OUTLIER_PASSES):
+        s = _search(model, full.subset(keep), pool, outside, rules)
+        if not outliers:
             break
-    return _conclude(search, pred0, baseline_audit)
+        flagged, zz = flag_outliers(s.data.df, s.data.residual(s.pred))
+        if not flagged.any():
+            break
+        idx = np.flatnonzero(keep)
+        z[idx[flagged]] = zz[flagged]
+        keep[idx[flagged]] = False
+    else:
+        s = _search(model, full.subset(keep), pool, outside, rules)
+    return _conclude(s, full, keep, z, pred0, baseline_audit)
+
+
+def _search(model, data: MeasuredData, pool, outside, rules: _Rules) -> _Search:
+    """The screening rounds on ``data``: while the residual is above noise,
+    screen, accept the best passing candidate, stop at a tie or when the
+    generic control explains the data as well."""
+    pred = _predict(model, _Setting(), data.cond, data.quantity)
+    s = _Search(model, data, dict(model.options), list(pool), pred, not_evaluable=list(outside))
+    if outside:
+        s.notes.append("not in the single-bearing model: " + ", ".join(outside))
+    for rnd in range(rules.max_rounds):
+        if not _screening_round(s, rnd, rules):
+            break
+    if rules.control and s.accepted:
+        _control_check(s, pred, CONTROL_MARGIN)
+    return s
+
+
+def _control_check(s: _Search, pred0: np.ndarray, margin: float) -> None:
+    """The generic control against what the rounds accepted: when a generic
+    smooth term (:func:`generic_control`), fitted to the baseline's
+    residual, gains as much BIC as the accepted candidates together (no
+    more than ``margin`` below), the data cannot tell them from an unknown
+    effect: they are withdrawn from ``accepted`` and reported as
+    unresolved."""
+    d = s.data
+    ctrl = generic_control(d, pred0, s.carriers)
+    k = len(s.accepted)
+    gain = _chi2(d.residual(pred0)) - _chi2(d.residual(s.pred)) - k * np.log(d.n)
+    if control_matches(ctrl, {"delta_bic": gain}, margin):
+        s.unresolved = (list(s.accepted), gain, ctrl)
+        s.accepted, s.accepted_cands = [], []
 
 
 def _screening_round(s: _Search, rnd: int, rules: _Rules) -> bool:
     """One round: stop when the residual is already noise (after the first
-    round), evaluate the candidates, fingerprint them (first round), screen,
-    and accept the best passing candidate unless a rival ties it. Returns
-    whether another round may follow."""
+    round), evaluate the candidates, fingerprint them (first round), screen
+    (with the generic control), and accept the best passing candidate unless
+    a rival ties it or the control matches it. Returns whether another round
+    may follow."""
     d = s.data
     r = d.residual(s.pred)
-    chi_base = _chi2(r[d.train])
+    chi_base = _chi2(r)
     chi_held = _chi2(r[d.held]) if d.held.any() else 0.0
-    if rnd > 0 and noise_p_value(chi_base, d.n_train) > 0.01:
+    if rnd > 0 and noise_p_value(chi_base, d.n) > 0.01:
         return False
     curves, dropped, notes = candidate_curves(s.model, s.st, s.pool, d, s.base_options)
     s.not_evaluable += dropped
@@ -159,15 +231,27 @@ def _screening_round(s: _Search, rnd: int, rules: _Rules) -> bool:
     s.pool = [c for c in s.pool if c.name in curves]
     if s.fingerprints is None:  # identifiability: around the baseline
         s.fingerprints, s.lookalikes = identifiability(
-            s.model, s.st, curves, d, s.base_options, rules.lookalike_cosine, rules.suggest
-        )
-    rows, fits = screen(curves, d, chi_base, chi_held, rules.delta_bic_min)
-    s.screening.append(screening_table(rows, rnd))
+            s.model, s.st, curves, d, s.base_options, rules.lookalike_cosine, rules.suggest,
+            rules.envelope,
+        )  # fmt: skip
+    k_acc = len(s.accepted_cands)
+    rows, fits = screen(curves, d, chi_base, chi_held, rules.delta_bic_min, k_acc)
+    if rnd == 0:  # the carriers' sensitivities around the baseline
+        s.carriers = {n: curves[n].slope() for n in CARRIERS if n in curves}
+    ctrl = generic_control(d, s.pred, s.carriers) if rules.control else None
+    table_rows = rows + ([control_row(ctrl, chi_base)] if ctrl is not None else [])
+    s.screening.append(screening_table(table_rows, rnd))
     best, rivals = select(rows, rules.tie_delta_bic)
     if best is None:
         return False
+    rivals += significant_rivals(rows, fits, best, d, set(rivals))
     if rivals:
         s.tie = [best["candidate"]] + rivals
+        if ctrl is not None and control_matches(ctrl, best, CONTROL_MARGIN):
+            s.tie.append("generic_control")
+        named = [m for m in s.tie if m in fits]
+        s.ties = tie_table(named, rows, fits, curves, s, rules.envelope, rules.suggest)
+        s.tie_gap = tie_gap(named, fits, s)
         return False
     _accept(s, curves[best["candidate"]].cand, best, fits[best["candidate"]], rnd)
     return True
@@ -182,42 +266,76 @@ def _accept(s: _Search, c: Candidate, best: dict, fit: dict, rnd: int) -> None:
     s.pred = fit["pred"]
     s.pool = [p for p in s.pool if p.name != c.name]
     s.accepted_cands.append(c)
+    everything = np.ones(d.n, dtype=bool)
     joint = joint_refit(
-        s.model, s.accepted_cands, s.accepted, d.cond, d.quantity, d.y, d.s, d.train, s.base_options
-    )
+        s.model, s.accepted_cands, s.accepted, d.cond, d.quantity, d.y, d.s, everything,
+        s.base_options,
+    )  # fmt: skip
     if joint is not None:
         s.st, s.pred = joint
 
 
-def _conclude(s: _Search, pred0: np.ndarray, baseline_audit: Any) -> Diagnosis:
+def _conclude(s: _Search, full: MeasuredData, keep, z, pred0, baseline_audit) -> Diagnosis:
     """The verdict, the held-out gap before/after and the measured points
-    with both predictions."""
+    (outliers included, flagged) with both predictions."""
     import polars as pl
 
     d = s.data
-    r0, r1 = d.residual(pred0), d.residual(s.pred)
-    p_final = noise_p_value(_chi2(r1[d.train]), d.n_train)
-    verdict = verdict_text(s.accepted, s.tie, p_final)
-    if s.accepted and p_final < 0.01:
-        s.notes.append(f"residual after the accepted effects still above noise (p = {p_final:.2g})")
-    gap = gap_table(d.df, r0, r1, d.held if d.held.any() else np.ones(len(d.y), dtype=bool))
-    if not d.held.any():
-        s.notes.append("no held-out points: the gap table uses all points")
-    points = d.df.with_columns(
+    pred1 = _predict(s.model, s.st, full.cond, full.quantity)
+    r1 = d.residual(s.pred)
+    p_final = noise_p_value(_chi2(r1), d.n)
+    out_table = outlier_table(full.df, ~keep, z, pred1)
+    verdict = verdict_text(s.accepted, s.tie, p_final, s.unresolved, out_table)
+    _final_notes(s, full, p_final)
+    pred_x = _extrapolation_prediction(s, full) if full.held.any() else pred1
+    r0f, rxf = full.residual(pred0), full.residual(pred_x)
+    gmask = (full.held if full.held.any() else np.ones(full.n, dtype=bool)) & keep
+    gap = gap_table(full.df, r0f, rxf, gmask)
+    points = full.df.with_columns(
         pl.Series("model_before", pred0),
-        pl.Series("model_after", s.pred),
-        pl.Series("heldout", d.held),
+        pl.Series("model_after", pred1),
+        pl.Series("model_extrapolated", pred_x),
+        pl.Series("heldout", full.held),
+        pl.Series("outlier", ~keep),
     )
     return Diagnosis(
-        baseline_audit,
-        s.fingerprints,
-        s.lookalikes,
-        s.screening,
-        s.accepted,
-        s.tie,
-        verdict,
-        gap,
-        points,
-        sorted(set(s.not_evaluable)),
-        s.notes,
+        baseline_audit, s.fingerprints, s.lookalikes, s.screening, s.accepted, s.tie,
+        verdict, gap, points, sorted(set(s.not_evaluable)), s.notes, ties=s.ties,
+        tie_gap=s.tie_gap, outliers=out_table,
+        unresolved=[] if s.unresolved is None else s.unresolved[0],
+    )  # fmt: skip
+
+
+def _extrapolation_prediction(s: _Search, full: MeasuredData) -> np.ndarray:
+    """The accepted candidates calibrated again without the held-out points
+    (each in its round's order on the training points, then together), and
+    their prediction of every row: the gap table's "after" on the held-out
+    points is then a true extrapolation."""
+    d = s.data
+    train = d.train
+    st, records = _Setting(), []
+    for c in s.accepted_cands:
+        cu = _curve(s.model, st, c, d.cond, d.quantity, s.base_options)
+        value = 1.0 if cu is None or c.kind == "switch" else _fit(cu, d.y, d.s, train)["value"]
+        st = st.apply(c, value, s.base_options)
+        records.append({"value": value})
+    joint = joint_refit(
+        s.model, s.accepted_cands, records, d.cond, d.quantity, d.y, d.s, train, s.base_options
     )
+    st = joint[0] if joint is not None else st
+    return _predict(s.model, st, full.cond, full.quantity)
+
+
+def _final_notes(s: _Search, full: MeasuredData, p_final: float) -> None:
+    weak = [a["name"] for a in s.accepted if a.get("identified") is False]
+    if weak:
+        s.notes.append("calibrated together, not identified by these data: " + ", ".join(weak))
+    if s.accepted and p_final < 0.01:
+        s.notes.append(f"residual after the accepted effects still above noise (p = {p_final:.2g})")
+    if not full.held.any():
+        s.notes.append("no held-out points: the gap table uses all points")
+    if not full.sigma_given:
+        s.notes.append(
+            "no sigma column: typical uncertainties assumed; intervals widened by the reduced "
+            "chi^2 of the fit when it exceeds 1"
+        )

@@ -1,0 +1,263 @@
+"""Joint calibration (:func:`calibrate`): several data sets at once -- rigs
+(each its own model spec), runs, load levels, quantities -- with parameters
+shared by every set or one value per set; up to three candidates calibrated
+together by bounded least squares on the models themselves, with
+profile-likelihood intervals and an identifiability check.
+
+Intervals: for each calibrated value, the range where the profile chi^2 (the
+others re-calibrated at each trial value) stays within 3.84 phi of the
+minimum, phi = max(1, chi^2 / (n - p)) (the reduced chi^2: the stated sigmas
+are stretched when the fit says they are too small).
+
+Identifiability: the Fisher information F = J^T J of the residual/sigma
+against the parameters scaled to their bound spans, in correlation form
+(unit diagonal). A parameter no data point moves (a zero diagonal), or with
+a large share (|v| > 0.3) of an eigenvector whose eigenvalue is below 1e-6
+of the largest (a combination the data cannot see: condition number above
+1e6), or whose profile interval spans both bounds, is reported as not
+identified."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Sequence
+
+import numpy as np
+
+from ..errors import ConfigError, ThermobearError
+from .measurements import prepare_measurements
+from .protocol import check_spec
+from .setting import _predict, _Setting
+from .statistics import fisher_identifiability
+
+#: Most distinct candidates calibrated together.
+MAX_JOINT = 3
+_CHI2_95 = 3.841
+
+
+@dataclass
+class Calibration:
+    """Result of :func:`calibrate`. ``parameters``: one row per calibrated
+    value (``name``, ``set``: the data-set label or "all" when shared,
+    ``value``, ``lower_95``, ``upper_95``, ``lower``, ``upper`` (bounds),
+    ``null`` (the baseline's), ``at_bound``, ``identified``); ``chi2`` and
+    ``n`` of the fit, ``phi`` (interval stretch), ``condition_number`` of
+    the Fisher information in correlation form, ``not_identified`` (names),
+    ``points``: every measured row with ``set``, ``model_before`` and
+    ``model_after``."""
+
+    parameters: Any
+    chi2: float
+    chi2_before: float
+    n: int
+    phi: float
+    condition_number: float
+    not_identified: list
+    points: Any
+    notes: list = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class _Slot:
+    """One calibrated value: the candidate (per set, by set index) and the
+    sets it acts on."""
+
+    name: str
+    label: str
+    cands: dict  # set index -> Candidate
+
+    @property
+    def bounds(self) -> tuple[float, float]:
+        c = next(iter(self.cands.values()))
+        return c.lower, c.upper
+
+
+def _sets(datasets) -> list[tuple[str, Any, Any]]:
+    items = datasets.items() if isinstance(datasets, dict) else enumerate(datasets)
+    out = []
+    for label, pair in items:
+        if not isinstance(pair, (tuple, list)) or len(pair) != 2:
+            raise ConfigError(f"invalid datasets[{label!r}] = {pair!r}: give (model, measured)")
+        check_spec(pair[0])
+        out.append((str(label), pair[0], pair[1]))
+    if not out:
+        raise ConfigError("invalid datasets = []: give at least one (model, measured) pair")
+    return out
+
+
+def _slots(sets, data, parameters, per_set) -> list[_Slot]:
+    """The calibrated values: a shared parameter is one slot over every set,
+    a per-set one a slot per set."""
+    names = list(dict.fromkeys(parameters))
+    if not 1 <= len(names) <= MAX_JOINT:
+        raise ConfigError(f"invalid parameters = {names}: give 1 to {MAX_JOINT} candidate names")
+    for p in per_set:
+        if p not in names:
+            raise ConfigError(f"invalid per_set = {p!r}: not among parameters {names}")
+    found = []
+    for i, (label, spec, _) in enumerate(sets):
+        pool = {c.name: c for c in spec.candidate_list(sorted(set(data[i].quantity.tolist())))}
+        for n in names:
+            c = pool.get(n)
+            if c is None or c.kind != "parameter":
+                raise ConfigError(
+                    f"invalid parameter = {n!r} for data set {label!r}: not a calibratable "
+                    "candidate of its model"
+                )
+        found.append(pool)
+    slots = []
+    for n in names:
+        if n in per_set:
+            slots += [_Slot(n, sets[i][0], {i: found[i][n]}) for i in range(len(sets))]
+        else:
+            slots.append(_Slot(n, "all", {i: found[i][n] for i in range(len(sets))}))
+    return slots
+
+
+class _Problem:
+    """The stacked residual of every set against the calibrated values."""
+
+    def __init__(self, sets, data, slots):
+        self.sets, self.data, self.slots = sets, data, slots
+        self.lo = np.array([s.bounds[0] for s in slots])
+        self.hi = np.array([s.bounds[1] for s in slots])
+        self.null = np.array([next(iter(s.cands.values())).null for s in slots])
+
+    def predict(self, theta) -> list[np.ndarray]:
+        out = []
+        for i, (_, spec, _) in enumerate(self.sets):
+            st, opts = _Setting(), dict(spec.options)
+            for s, v in zip(self.slots, theta, strict=True):
+                if i in s.cands:
+                    st = st.apply(s.cands[i], float(v), opts)
+            d = self.data[i]
+            out.append(_predict(spec, st, d.cond, d.quantity))
+        return out
+
+    def resid(self, theta) -> np.ndarray:
+        return np.concatenate(
+            [(d.y - p) / d.s for d, p in zip(self.data, self.predict(theta), strict=True)]
+        )
+
+    def chi2(self, theta) -> float:
+        r = self.resid(theta)
+        return float(r @ r)
+
+
+def _least_squares(prob: _Problem, x0, free: np.ndarray, fixed: np.ndarray):
+    """Bounded least squares over the ``free`` slots (the others at
+    ``fixed``); returns (theta, chi^2, jacobian)."""
+    from scipy.optimize import least_squares
+
+    def full(x):
+        t = fixed.copy()
+        t[free] = x
+        return t
+
+    lo, hi = prob.lo[free], prob.hi[free]
+    start = np.clip(x0[free], lo + 1e-9 * (hi - lo), hi - 1e-9 * (hi - lo))
+    res = least_squares(
+        lambda x: prob.resid(full(x)), start, bounds=(lo, hi), x_scale=hi - lo,
+        diff_step=1e-5, max_nfev=80 * (1 + int(free.sum())),
+    )  # fmt: skip
+    return full(res.x), 2.0 * float(res.cost), res.jac
+
+
+def _best_fit(prob: _Problem):
+    """The least-chi^2 values from two starts (the baseline's values and
+    the middle of the bounds)."""
+    allfree = np.ones(len(prob.slots), dtype=bool)
+    best = None
+    for x0 in (prob.null, 0.5 * (prob.lo + prob.hi)):
+        try:
+            fit = _least_squares(prob, x0, allfree, x0.copy())
+        except ThermobearError:
+            continue
+        if best is None or fit[1] < best[1]:
+            best = fit
+    if best is None:
+        raise ThermobearError("joint calibration: the model fails at every start")
+    return best
+
+
+def _profile(prob: _Problem, theta, chi_min, j, thr) -> tuple[float, float]:
+    """The 95 % profile-likelihood interval of slot ``j``: the others
+    re-calibrated at each trial value; an edge is the bound when the
+    profile stays below the threshold up to it."""
+    from scipy.optimize import brentq
+
+    free = np.ones(len(theta), dtype=bool)
+    free[j] = False
+
+    def excess(t: float) -> float:
+        fixed = theta.copy()
+        fixed[j] = t
+        if free.any():
+            chi = _least_squares(prob, theta, free, fixed)[1]
+        else:
+            chi = prob.chi2(fixed)
+        return chi - chi_min - thr
+
+    edges = []
+    for bound in (prob.lo[j], prob.hi[j]):
+        if abs(bound - theta[j]) <= 1e-12 or excess(bound) <= 0.0:
+            edges.append(float(bound))
+            continue
+        tol = 1e-4 * (prob.hi[j] - prob.lo[j])
+        edges.append(float(brentq(excess, theta[j], bound, xtol=tol)))
+    return edges[0], edges[1]
+
+
+def calibrate(datasets, parameters: Sequence[str], per_set: Sequence[str] = ()) -> Calibration:
+    """Calibrate up to three candidates (names from :func:`candidates` of
+    each set's model: parameters, not switches) on several data sets at
+    once. ``datasets``: a list or a dict (label -> pair) of ``(model,
+    measured)`` pairs -- a model spec (one per rig; the same spec for runs or
+    load levels of one rig) and anything :func:`load_measurements` reads;
+    ``per_set``: the names calibrated with a value of their own in each set
+    (e.g. a sensor offset per run), the others shared by all sets. Returns a
+    :class:`Calibration` (see the module docstring for the statistics)."""
+    sets = _sets(datasets)
+    data = [prepare_measurements(m, spec.quantities, None) for _, spec, m in sets]
+    slots = _slots(sets, data, list(parameters), list(per_set))
+    prob = _Problem(sets, data, slots)
+    chi_before = prob.chi2(prob.null)
+    theta, chi_min, jac = _best_fit(prob)
+    n, p = sum(d.n for d in data), len(slots)
+    phi = max(1.0, chi_min / max(n - p, 1))
+    cond, weak = fisher_identifiability(jac, prob.hi - prob.lo)
+    intervals = [_profile(prob, theta, chi_min, j, _CHI2_95 * phi) for j in range(p)]
+    for j, (a, b) in enumerate(intervals):
+        if a <= prob.lo[j] and b >= prob.hi[j]:
+            weak.add(j)
+    return _result(prob, theta, intervals, weak, (chi_min, chi_before, n, phi, cond))
+
+
+def _result(prob: _Problem, theta, intervals, weak, stats) -> Calibration:
+    import polars as pl
+
+    chi_min, chi_before, n, phi, cond = stats
+    span = prob.hi - prob.lo
+    rows = [
+        (s.name, s.label, float(theta[j]), intervals[j][0], intervals[j][1],
+         float(prob.lo[j]), float(prob.hi[j]), float(prob.null[j]),
+         bool(min(theta[j] - prob.lo[j], prob.hi[j] - theta[j]) < 0.01 * span[j]),
+         j not in weak)
+        for j, s in enumerate(prob.slots)
+    ]  # fmt: skip
+    table = pl.DataFrame(
+        rows,
+        schema=["name", "set", "value", "lower_95", "upper_95", "lower", "upper", "null",
+                "at_bound", "identified"],
+        orient="row",
+    )  # fmt: skip
+    before, after = prob.predict(prob.null), prob.predict(theta)
+    points = pl.concat(
+        d.df.with_columns(
+            pl.lit(label).alias("set"), pl.Series("model_before", b), pl.Series("model_after", a)
+        )
+        for (label, _, _), d, b, a in zip(prob.sets, prob.data, before, after, strict=True)
+    )
+    bad = sorted({f"{prob.slots[j].name}@{prob.slots[j].label}" for j in weak})
+    notes = [f"not identified by these data: {', '.join(bad)}"] if bad else []
+    return Calibration(table, chi_min, chi_before, n, phi, cond, bad, points, notes)
