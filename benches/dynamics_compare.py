@@ -172,7 +172,9 @@ def rust_ns(steps):
     except (OSError, subprocess.CalledProcessError) as exc:
         print(f"rust timing unavailable: {exc}")
         return None, None
-    vals = dict(line.split() for line in out.splitlines() if line.strip())
+    # `key value` lines; the per-instruction-set table lines have more fields.
+    pairs = (line.split() for line in out.splitlines())
+    vals = dict(p for p in pairs if len(p) == 2)
     return float(vals["ns_per_step"]), float(vals.get("batch_ns_per_lane_step", "nan"))
 
 

@@ -1,16 +1,50 @@
 //! The seed's bifurcation diagram set (A, Figs. 14-15): 1001 speeds from
-//! 6,500 to 16,500 rpm x 2 bearing-stiffness cases x up/down continuation,
-//! 300 transient + 100 recorded mesh periods, 64 RK4 steps per mesh period,
-//! on a 2-thread rayon pool; then a small torque x speed regime map.
+//! 6,500 to 16,500 rpm x 3 bearing-stiffness cases x up/down continuation
+//! (6 sweeps), 300 transient + 100 recorded mesh periods, 64 RK4 steps per
+//! mesh period, on a 2-thread rayon pool; then a small torque x speed
+//! regime map.
 //!
 //! Mesh and bearing stiffness are computed (src/dynamics/seed.rs): the
-//! constant and speed-dependent 6208 cases; the thermal case needs the
-//! thermal module's stiffness curve and is run from Python.
+//! constant and speed-dependent 6208 cases, and the thermal case from the
+//! coupled thermal model at the seed operating point
+//! (`CoupledBearing::seed_a`, level inner ring). The bearing solves are not
+//! timed; the sweep set's wall and CPU time are printed.
 //!
 //! Usage: cargo run --release --example seed_diagrams [speeds] [threads]
 
 use std::time::Instant;
+use thermobear::bearing::{SolveOptions, Tilt};
+use thermobear::dynamics::batch::Isa;
 use thermobear::dynamics::*;
+use thermobear::thermal::coupled::{stiffness_curve_mode, CoupledBearing, CoupledOptions, StiffnessMode};
+
+/// Bearing stiffness at the coupled thermal steady state of each speed,
+/// `per_shaft` bearings in parallel (the Python "thermal" case).
+fn thermal_schedule(
+    bearing: &thermobear::Bearing,
+    grid: &[f64],
+    fa: f64,
+    fr: f64,
+    per_shaft: usize,
+) -> thermobear::Result<BearingSchedule> {
+    let d = CoupledOptions::default();
+    let options = CoupledOptions {
+        solve: SolveOptions {
+            tilt: Tilt::held_level(),
+            ..d.solve
+        },
+        ..d
+    };
+    let coupled = CoupledBearing::seed_a(bearing, options)?;
+    let states = stiffness_curve_mode(&coupled, grid, fa, fr, StiffnessMode::Thermal)?;
+    let n = per_shaft as f64;
+    BearingSchedule::new(
+        grid.iter()
+            .zip(&states)
+            .map(|(&s, (b, _))| (s, n * b.radial_stiffness_n_per_m, n * b.axial_stiffness_n_per_m))
+            .collect(),
+    )
+}
 
 fn summary(r: &SweepResult) -> String {
     let mut per1 = 0;
@@ -79,6 +113,7 @@ fn main() -> thermobear::Result<()> {
     let bearing = thermobear::Bearing::preset("6208")?;
     let (fa, fr) = seed_bearing_loads(100.0)?;
     let grid: Vec<f64> = (0..=44).map(|i| 6000.0 + 250.0 * i as f64).collect();
+    let t0 = Instant::now();
     let cases = [
         (
             "constant",
@@ -88,7 +123,13 @@ fn main() -> thermobear::Result<()> {
             "speed, no thermal",
             bearing_schedule(&bearing, BearingCase::Speed, &grid, fa, fr, 2)?,
         ),
+        ("thermal", thermal_schedule(&bearing, &grid, fa, fr, 2)?),
     ];
+    println!(
+        "bearing stiffness of 3 cases at {} speeds: {:.2} s (not part of the set's time)",
+        grid.len(),
+        t0.elapsed().as_secs_f64()
+    );
     let models: Vec<HelicalSweep> = cases
         .iter()
         .map(|(_, b)| HelicalSweep {
@@ -116,9 +157,10 @@ fn main() -> thermobear::Result<()> {
     let cpu = process_cpu_s().zip(c0).map(|(a, b)| a - b);
     let lane_steps = (jobs.len() * n * (cfg.transient_periods + cfg.recorded_periods) * cfg.steps_per_period) as f64;
     println!(
-        "seed set: {} speeds x {} sweeps on {threads} threads: {dt:.2} s wall, {} s CPU ({:.1} CPU-ns per step)",
+        "seed set: {} speeds x {} sweeps on {threads} threads ({}): {dt:.2} s wall, {} s CPU ({:.1} CPU-ns per lane-step)",
         n,
         jobs.len(),
+        Isa::detected().name(),
         cpu.map_or("?".into(), |c| format!("{c:.2}")),
         cpu.unwrap_or(f64::NAN) * 1e9 / lane_steps
     );

@@ -16,7 +16,7 @@
 //! [`CHUNK`] speeds otherwise); returning `false` stops the work with
 //! `Error::Interrupted`.
 
-use super::batch::{poincare_sample_batch, HelicalBatch, LANES};
+use super::batch::{self, LANES};
 use super::classify::{
     chaos_verdict, impact_regime, jumps_and_transitions, section_verdict, zero_one_test, ChaosEvidence, ClassifyConfig,
     ImpactRegime, Motion, Transition, MIN_ZERO_ONE_POINTS,
@@ -658,8 +658,8 @@ impl SweepModel<14> for HelicalSweep {
         ]
     }
 
-    /// Lock-step batches of [`LANES`] systems (short batches are padded by
-    /// repeating their first lane).
+    /// Lock-step batches of up to [`LANES`] systems on the detected
+    /// instruction set ([`super::batch::poincare_many`]).
     fn poincare_many(
         models: &[&Self],
         speeds: &[f64],
@@ -671,15 +671,7 @@ impl SweepModel<14> for HelicalSweep {
             .zip(speeds)
             .map(|(m, &s)| m.system_at(s, cfg.steps_per_period))
             .collect::<Result<Vec<_>>>()?;
-        let mut out = Vec::with_capacity(systems.len());
-        for (sys, x0) in systems.chunks(LANES).zip(starts.chunks(LANES)) {
-            let pick = |l: usize| if l < sys.len() { l } else { 0 };
-            let batch = HelicalBatch::<LANES>::new(std::array::from_fn(|l| &sys[pick(l)]))?;
-            let st: [[f64; 14]; LANES] = std::array::from_fn(|l| x0[pick(l)]);
-            let recs = poincare_sample_batch(&batch, &st, cfg.transient_periods, cfg.recorded_periods)?;
-            out.extend(recs.into_iter().take(sys.len()));
-        }
-        Ok(out)
+        batch::poincare_many(&systems, starts, cfg.transient_periods, cfg.recorded_periods)
     }
 }
 

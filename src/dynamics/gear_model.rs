@@ -42,6 +42,7 @@
 //! nothing but rounding; the adaptive checks use per-state absolute
 //! tolerances scaled with the backlash and velocity scale instead.
 
+use super::batch::HelicalKernel;
 use super::ode::{GridOde, OdeSystem, PeriodicTable};
 use crate::error::{finite, non_negative, positive};
 use crate::{Error, Result};
@@ -536,7 +537,7 @@ impl HelicalPair {
         let g = 2 * steps_per_period;
         let (km, _) = self.stiffness.on_grid(g);
         let (e, de) = self.error.on_grid(g);
-        let coef = (0..g).map(|j| [km[j], e[j], de[j] / period]).collect();
+        let coef: Vec<[f64; 3]> = (0..g).map(|j| [km[j], e[j], de[j] / period]).collect();
         let kb = self.bearing_stiffness();
         let cb = self.bearing_damping();
         let mut kbm = [0.0; 7];
@@ -549,18 +550,24 @@ impl HelicalPair {
         }
         let mut g7 = [0.0; 7];
         g7[6] = self.params.input_torque_n_m / self.params.pinion.base_radius_m / self.mass[6];
+        let b = self.params.half_backlash_m;
+        let cm = self.mesh_damping_n_s_per_m;
+        let always = self.params.mesh_damping == MeshDamping::Always;
+        let step = period / steps_per_period as f64;
+        let kernel = HelicalKernel::new(&self.a, &am, &kbm, &cbm, &g7, b, cm, always, step, &coef);
         Ok(HelicalPairSystem {
             a: self.a,
             am,
             kbm,
             cbm,
             g: g7,
-            b: self.params.half_backlash_m,
-            cm: self.mesh_damping_n_s_per_m,
-            always: self.params.mesh_damping == MeshDamping::Always,
-            step: period / steps_per_period as f64,
+            b,
+            cm,
+            always,
+            step,
             period,
             coef,
+            kernel,
             stiffness: self.stiffness.clone(),
             error: self.error.clone(),
         })
@@ -583,6 +590,8 @@ pub struct HelicalPairSystem {
     pub(crate) period: f64,
     /// `[k_m, e, de/dt]` on the half-step grid (N/m, m, m/s).
     pub(crate) coef: Vec<[f64; 3]>,
+    /// The RK4 kernel's tables (src/dynamics/batch.rs).
+    pub(crate) kernel: HelicalKernel,
     pub(crate) stiffness: PeriodicTable,
     pub(crate) error: PeriodicTable,
 }
@@ -661,6 +670,18 @@ impl GridOde<14> for HelicalPairSystem {
     fn rhs_grid(&self, j: usize, x: &[f64; 14], dx: &mut [f64; 14]) {
         let [km, e, edot] = self.coef[j];
         self.accel(km, e, edot, x, dx);
+    }
+    /// The lane kernel of src/dynamics/batch.rs with one lane (the same
+    /// RK4 step rearranged; equal to four `rhs_grid` stages up to rounding,
+    /// and bitwise equal to every lane of the lock-step batches).
+    #[inline(always)]
+    fn rk4_step(&self, n: usize, x: &mut [f64; 14]) {
+        self.kernel.step(n, x);
+    }
+    /// Both states in one 2-lane register.
+    #[inline(always)]
+    fn rk4_step_pair(&self, n: usize, x: &mut [f64; 14], y: &mut [f64; 14]) {
+        self.kernel.step_pair(n, x, y);
     }
 }
 

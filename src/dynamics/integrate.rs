@@ -35,9 +35,17 @@ fn stage_indices(n: usize, grid_len: usize) -> (usize, usize, usize) {
 }
 
 /// One classical RK4 step of a [`GridOde`] from grid step `n` (the step's start
-/// time is `n h`; only `n mod steps_per_period` matters).
+/// time is `n h`; only `n mod steps_per_period` matters): the system's
+/// [`GridOde::rk4_step`] (a specialised kernel where the system has one).
 #[inline(always)]
 pub fn rk4_step_grid<const N: usize, S: GridOde<N>>(sys: &S, n: usize, x: &mut [f64; N]) {
+    sys.rk4_step(n, x);
+}
+
+/// One classical RK4 step from four [`GridOde::rhs_grid`] evaluations (the
+/// reference form of every RK4 step in this crate).
+#[inline(always)]
+pub fn rk4_step_generic<const N: usize, S: GridOde<N>>(sys: &S, n: usize, x: &mut [f64; N]) {
     let h = sys.step();
     let (j0, j1, j2) = stage_indices(n, sys.grid_len());
     let mut k1 = [0.0; N];

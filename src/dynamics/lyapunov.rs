@@ -87,8 +87,7 @@ pub fn largest_lyapunov_benettin<const N: usize, S: GridOde<N>>(
     while done < cfg.measure_steps {
         let chunk = cfg.renorm_steps.min(cfg.measure_steps - done);
         for _ in 0..chunk {
-            rk4_step_grid(sys, n, &mut x);
-            rk4_step_grid(sys, n, &mut y);
+            sys.rk4_step_pair(n, &mut x, &mut y);
             n = (n + 1) % per;
         }
         done += chunk;
@@ -201,8 +200,7 @@ pub fn largest_lyapunov_blocks<const N: usize, S: GridOde<N>>(
         let mut sum_log = 0.0;
         for _ in 0..cfg.renorms_per_block {
             for _ in 0..cfg.renorm_steps {
-                rk4_step_grid(sys, n, &mut x);
-                rk4_step_grid(sys, n, &mut y);
+                sys.rk4_step_pair(n, &mut x, &mut y);
                 n = (n + 1) % per;
             }
             let d = weighted_distance(&x, &y, scale);

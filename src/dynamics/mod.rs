@@ -14,13 +14,16 @@ pub mod lyapunov;
 pub mod ode;
 pub mod poincare;
 pub mod seed;
+pub(crate) mod simd;
 
 pub use bifurcation::{
     regime_map, sweep, sweep_many, BearingSchedule, HelicalSweep, RegimeCell, SpeedPoint, SweepConfig, SweepDirection,
     SweepModel, SweepResult,
 };
 pub use classify::{ChaosEvidence, ClassifyConfig, ImpactRegime, Motion, SectionVerdict, Transition};
-pub use gear_model::{BacklashOscillator, BearingSupport, GearBody, HelicalPair, HelicalPairParams, MeshDamping};
+pub use gear_model::{
+    BacklashOscillator, BearingSupport, GearBody, HelicalPair, HelicalPairParams, HelicalPairSystem, MeshDamping,
+};
 pub use ode::{GridOde, OdeSystem, PeriodicTable};
 pub use seed::{
     bearing_schedule, helical_params, helical_params_from_tables, seed_a_params, seed_bearing_loads, BearingCase,

@@ -37,6 +37,30 @@ pub trait GridOde<const N: usize> {
     fn grid_len(&self) -> usize;
     /// Evaluate `dx = f(t_j, x)` at half-step grid point `j` (`0 <= j < grid_len`).
     fn rhs_grid(&self, j: usize, x: &[f64; N], dx: &mut [f64; N]);
+
+    /// One classical RK4 step from grid step `n` (`n mod steps_per_period`
+    /// counts). The default evaluates [`GridOde::rhs_grid`] four times
+    /// ([`crate::dynamics::integrate::rk4_step_generic`]); systems with a
+    /// specialised kernel override it (same method, equal up to round-off).
+    #[inline(always)]
+    fn rk4_step(&self, n: usize, x: &mut [f64; N])
+    where
+        Self: Sized,
+    {
+        crate::dynamics::integrate::rk4_step_generic(self, n, x);
+    }
+
+    /// One RK4 step of two states of the same system (the two trajectories
+    /// of a Lyapunov estimate); kernels with lanes run them in lock-step.
+    /// Each result equals [`GridOde::rk4_step`] of that state exactly.
+    #[inline(always)]
+    fn rk4_step_pair(&self, n: usize, x: &mut [f64; N], y: &mut [f64; N])
+    where
+        Self: Sized,
+    {
+        self.rk4_step(n, x);
+        self.rk4_step(n, y);
+    }
 }
 
 /// Adapter that evaluates an [`OdeSystem`] on an RK4 grid: `t_j = j h / 2`
