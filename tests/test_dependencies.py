@@ -18,6 +18,8 @@ import tomllib
 from importlib import metadata
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGE = ROOT / "python" / "thermobear"
 PYPROJECT = tomllib.loads((ROOT / "pyproject.toml").read_text())
@@ -165,6 +167,44 @@ def test_optional_extra_imports_must_be_guarded(tmp_path):
         "try:\n    import hypothesis\nexcept ImportError:\n    hypothesis = None\n"
     )
     assert [m.split()[0] for m in undeclared_imports(tmp_path)] == ["hypothesis"]
+
+
+def optional_module_calls(package: Path) -> list[tuple[str, str, str]]:
+    """``(module, extra, where)`` of every ``optional_module("m", "extra", ...)``
+    call in the package (the one place feature modules are imported by name)."""
+    calls = []
+    for path in sorted(package.rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(), filename=str(path))):
+            func = getattr(node, "func", None)
+            name = getattr(func, "id", getattr(func, "attr", None))
+            if isinstance(node, ast.Call) and name == "optional_module" and len(node.args) >= 2:
+                module, extra = (ast.literal_eval(a) for a in node.args[:2])
+                calls.append((module, extra, f"{path.name}:{node.lineno}"))
+    return calls
+
+
+def test_optional_modules_are_declared_in_their_extra():
+    # A feature module asked for by name must come with the extra the
+    # error message tells the user to install, and never with the plain install.
+    extras = PYPROJECT["project"]["optional-dependencies"]
+    providers = metadata.packages_distributions()
+    calls = optional_module_calls(PACKAGE)
+    assert ("dask.distributed", "dask") in {(m, e) for m, e, _ in calls}
+    for module, extra, where in calls:
+        top = module.split(".")[0]
+        dists = {_normalise(d) for d in providers.get(top, [top])}
+        declared = {_requirement_name(r) for r in extras.get(extra, [])}
+        assert extra not in TOOLING_EXTRAS, f"{where}: {extra} is a tooling extra"
+        assert dists & declared, f"{where}: {module} is not in the {extra!r} extra"
+        assert not dists & runtime_requirements(), f"{where}: {module} is a runtime dependency"
+
+
+def test_optional_module_names_the_extra_when_missing():
+    from thermobear._optional import optional_module
+    from thermobear.errors import ConfigError
+
+    with pytest.raises(ConfigError, match=r'engine = .x.: .*pip install "thermobear\[dask\]"'):
+        optional_module("thermobear_no_such_module", "dask", "engine", "x", "a test")
 
 
 def test_installed_metadata_matches_pyproject():

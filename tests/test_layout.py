@@ -22,7 +22,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "python" / "thermobear"
 #: Bottom layer first. A module may import from its own layer or a lower
 #: one; a module's layer is that of the longest prefix of its name listed.
 LAYERS: list[tuple[str, ...]] = [
-    ("thermobear._native", "thermobear.errors", "thermobear.config"),
+    ("thermobear._native", "thermobear.errors", "thermobear._optional", "thermobear.config"),
     ("thermobear.bearing",),
     ("thermobear.thermal",),
     ("thermobear.gear", "thermobear.spindle", "thermobear.rotor"),

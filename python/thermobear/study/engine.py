@@ -9,12 +9,10 @@ import sys
 from concurrent.futures import Future, ThreadPoolExecutor, wait
 from typing import Any, Callable, Iterable, Optional
 
+from .._optional import optional_module
 from ..errors import ConfigError
 from .grid import Grid, grid_hash
 from .kinds import kind_of
-
-#: What to install for ``engine=`` a Dask client or scheduler address.
-DASK_HINT = 'pip install "thermobear[dask]"'
 
 #: ``on_done(index, frame)`` for each finished chunk, in completion order.
 OnDone = Callable[[int, Any], None]
@@ -109,14 +107,9 @@ def run_local(
 
 def _distributed(engine: Any) -> Any:
     """The ``dask.distributed`` module, or a ConfigError saying what to install."""
-    try:
-        import dask.distributed
-    except ImportError:
-        raise ConfigError(
-            f"invalid engine = {engine!r}: running a study on a Dask cluster needs Dask; "
-            f"install it with: {DASK_HINT}"
-        ) from None
-    return dask.distributed
+    return optional_module(
+        "dask.distributed", "dask", "engine", engine, "running a study on a Dask cluster"
+    )
 
 
 def dask_client(engine: Any) -> tuple[Any, bool]:
