@@ -18,9 +18,12 @@ use crate::thermal::friction::{resolve_lubrication, HeatModel, Lubrication, SkfS
 use crate::thermal::presets::SeedAParams;
 use crate::thermal::Lubricant;
 
-/// Model settings shared by both entry points.
-struct Settings {
-    effects: Option<Vec<String>>,
+/// Model settings of the coupled bearing, shared by every entry point: one
+/// dict with every key, built by `thermobear.thermal.state._model_kwargs`
+/// (the keyword arguments of `thermobear.thermal_state`).
+#[derive(FromPyObject)]
+#[pyo3(from_item_all)]
+pub struct Settings {
     lubricant: String,
     lubrication_factor_f0: Option<f64>,
     spin_friction: f64,
@@ -32,11 +35,6 @@ struct Settings {
     extra_heat_w: f64,
     housing_conductance_scale: f64,
     churning_oil_fraction: Option<f64>,
-    heat: HeatArgs,
-}
-
-/// Heat-model keyword arguments (docs/concepts/physics.md §9).
-struct HeatArgs {
     heat_model: String,
     lubrication: Option<String>,
     skf_series: Option<String>,
@@ -45,9 +43,9 @@ struct HeatArgs {
     seal_moment_nmm: f64,
 }
 
-impl HeatArgs {
-    /// Parsed heat model and SKF settings.
-    fn parse(&self) -> Result<(HeatModel, SkfSettings)> {
+impl Settings {
+    /// Parsed heat model and SKF settings (docs/concepts/physics.md §9).
+    fn heat(&self) -> Result<(HeatModel, SkfSettings)> {
         let skf = SkfSettings {
             series: self.skf_series.as_deref().map(SkfSeries::from_name).transpose()?,
             mu_ehl: self.sliding_friction_ehl,
@@ -57,11 +55,10 @@ impl HeatArgs {
         skf.validate()?;
         Ok((HeatModel::from_name(&self.heat_model)?, skf))
     }
-}
 
-impl Settings {
-    fn build(self, bearing: &Bearing) -> Result<CoupledBearing> {
-        let mut solve = solve_options(self.effects, &self.raceway_control)?;
+    fn build(self, bearing: &Bearing, effects: Option<Vec<String>>) -> Result<CoupledBearing> {
+        let (heat_model, skf) = self.heat()?;
+        let mut solve = solve_options(effects, &self.raceway_control)?;
         solve.tilt = tilt_option(self.misalignment_rad, 0.0)?;
         let p = seed_a_params(
             bearing,
@@ -71,9 +68,8 @@ impl Settings {
             self.housing_material,
         )?;
         let mounting = seed_a_mounting(&p);
-        let (heat_model, skf) = self.heat.parse()?;
         let (lubrication, f0, x) = resolve_lubrication(
-            self.heat.lubrication.as_deref(),
+            self.lubrication.as_deref(),
             bearing.geometry.bearing_type,
             self.lubrication_factor_f0,
             self.churning_oil_fraction,
@@ -179,7 +175,7 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
 
 /// Coupled thermal steady state of one bearing in the seed A network.
 #[pyfunction]
-#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=None, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, churning_oil_fraction=None, heat_model="palmgren".to_string(), lubrication=None, skf_series=None, sliding_friction_ehl=None, replenishment_krs=None, seal_moment_nmm=0.0))]
+#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects, settings))]
 #[allow(clippy::too_many_arguments)]
 pub fn thermal_state<'py>(
     py: Python<'py>,
@@ -188,50 +184,12 @@ pub fn thermal_state<'py>(
     axial_n: f64,
     radial_n: f64,
     effects: Option<Vec<String>>,
-    lubricant: String,
-    lubrication_factor_f0: Option<f64>,
-    spin_friction: f64,
-    oil_air_temperature_c: f64,
-    ambient_temperature_c: f64,
-    housing_material: Option<PyMaterial>,
-    raceway_control: String,
-    misalignment_rad: Option<f64>,
-    extra_heat_w: f64,
-    housing_conductance_scale: f64,
-    churning_oil_fraction: Option<f64>,
-    heat_model: String,
-    lubrication: Option<String>,
-    skf_series: Option<String>,
-    sliding_friction_ehl: Option<f64>,
-    replenishment_krs: Option<f64>,
-    seal_moment_nmm: f64,
+    settings: Settings,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let settings = Settings {
-        effects,
-        lubricant,
-        lubrication_factor_f0,
-        spin_friction,
-        oil_air_temperature_c,
-        ambient_temperature_c,
-        housing_material,
-        raceway_control,
-        misalignment_rad,
-        extra_heat_w,
-        housing_conductance_scale,
-        churning_oil_fraction,
-        heat: HeatArgs {
-            heat_model,
-            lubrication,
-            skf_series,
-            sliding_friction_ehl,
-            replenishment_krs,
-            seal_moment_nmm,
-        },
-    };
     let b = &bearing.inner;
     let (c, s) = py
         .detach(|| -> Result<(CoupledBearing, ThermalState)> {
-            let c = settings.build(b)?;
+            let c = settings.build(b, effects)?;
             let s = c.solve(speed_rpm, axial_n, radial_n)?;
             Ok((c, s))
         })
@@ -241,7 +199,7 @@ pub fn thermal_state<'py>(
 
 /// Thermal stiffness curve: the coupled state at every speed, in parallel.
 #[pyfunction]
-#[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=None, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, churning_oil_fraction=None, heat_model="palmgren".to_string(), lubrication=None, skf_series=None, sliding_friction_ehl=None, replenishment_krs=None, seal_moment_nmm=0.0, progress=None))]
+#[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, effects, settings, progress=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn thermal_stiffness_curve<'py>(
     py: Python<'py>,
@@ -250,49 +208,11 @@ pub fn thermal_stiffness_curve<'py>(
     axial_n: f64,
     radial_n: f64,
     effects: Option<Vec<String>>,
-    lubricant: String,
-    lubrication_factor_f0: Option<f64>,
-    spin_friction: f64,
-    oil_air_temperature_c: f64,
-    ambient_temperature_c: f64,
-    housing_material: Option<PyMaterial>,
-    raceway_control: String,
-    misalignment_rad: Option<f64>,
-    extra_heat_w: f64,
-    housing_conductance_scale: f64,
-    churning_oil_fraction: Option<f64>,
-    heat_model: String,
-    lubrication: Option<String>,
-    skf_series: Option<String>,
-    sliding_friction_ehl: Option<f64>,
-    replenishment_krs: Option<f64>,
-    seal_moment_nmm: f64,
+    settings: Settings,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let speeds = speeds_rpm.as_slice()?.to_vec();
-    let settings = Settings {
-        effects,
-        lubricant,
-        lubrication_factor_f0,
-        spin_friction,
-        oil_air_temperature_c,
-        ambient_temperature_c,
-        housing_material,
-        raceway_control,
-        misalignment_rad,
-        extra_heat_w,
-        housing_conductance_scale,
-        churning_oil_fraction,
-        heat: HeatArgs {
-            heat_model,
-            lubrication,
-            skf_series,
-            sliding_friction_ehl,
-            replenishment_krs,
-            seal_moment_nmm,
-        },
-    };
-    let c = settings.build(&bearing.inner).py_err()?;
+    let c = settings.build(&bearing.inner, effects).py_err()?;
     let results = chunked_map(py, &speeds, default_chunk(speeds.len()), progress.as_ref(), |&n| {
         c.solve(n, axial_n, radial_n)
     })?;
@@ -347,7 +267,7 @@ pub fn thermal_stiffness_curve<'py>(
 /// speed, axial and radial load) under one set of model settings, one row per
 /// point with its error if it failed (see `batch.rs`).
 #[pyfunction]
-#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects=None, lubricant="e-drive ATF".to_string(), lubrication_factor_f0=None, spin_friction=0.06, oil_air_temperature_c=28.0, ambient_temperature_c=26.0, housing_material=None, raceway_control="outer".to_string(), misalignment_rad=Some(0.0), extra_heat_w=0.0, housing_conductance_scale=1.0, churning_oil_fraction=None, heat_model="palmgren".to_string(), lubrication=None, skf_series=None, sliding_friction_ehl=None, replenishment_krs=None, seal_moment_nmm=0.0, threads=None, progress=None))]
+#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, effects, settings, threads=None, progress=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn thermal_state_many<'py>(
     py: Python<'py>,
@@ -356,49 +276,11 @@ pub fn thermal_state_many<'py>(
     axial_n: PyReadonlyArray1<'py, f64>,
     radial_n: PyReadonlyArray1<'py, f64>,
     effects: Option<Vec<String>>,
-    lubricant: String,
-    lubrication_factor_f0: Option<f64>,
-    spin_friction: f64,
-    oil_air_temperature_c: f64,
-    ambient_temperature_c: f64,
-    housing_material: Option<PyMaterial>,
-    raceway_control: String,
-    misalignment_rad: Option<f64>,
-    extra_heat_w: f64,
-    housing_conductance_scale: f64,
-    churning_oil_fraction: Option<f64>,
-    heat_model: String,
-    lubrication: Option<String>,
-    skf_series: Option<String>,
-    sliding_friction_ehl: Option<f64>,
-    replenishment_krs: Option<f64>,
-    seal_moment_nmm: f64,
+    settings: Settings,
     threads: Option<usize>,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let settings = Settings {
-        effects,
-        lubricant,
-        lubrication_factor_f0,
-        spin_friction,
-        oil_air_temperature_c,
-        ambient_temperature_c,
-        housing_material,
-        raceway_control,
-        misalignment_rad,
-        extra_heat_w,
-        housing_conductance_scale,
-        churning_oil_fraction,
-        heat: HeatArgs {
-            heat_model,
-            lubrication,
-            skf_series,
-            sliding_friction_ehl,
-            replenishment_krs,
-            seal_moment_nmm,
-        },
-    };
-    let c = settings.build(&bearing.inner).py_err()?;
+    let c = settings.build(&bearing.inner, effects).py_err()?;
     super::batch::thermal_many(py, &c, [&speed_rpm, &axial_n, &radial_n], threads, progress.as_ref())
 }
 

@@ -79,8 +79,8 @@ def thermal_state_many(
         bearing._b,
         *(column_array(frame, c) for c in names),
         _effects_arg(effects),
+        options,
         threads=None if threads is None else int(threads),
         progress=progress,
-        **options,
     )
     return join_inputs(frame, result_frame(raw))

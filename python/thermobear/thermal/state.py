@@ -282,7 +282,7 @@ def thermal_state(
         float(0.0 if radial_n is None else radial_n),
     )
     raw = _native.thermal_state(
-        bearing._b, float(speed_rpm), *loads, _effects_arg(effects), **options
+        bearing._b, float(speed_rpm), *loads, _effects_arg(effects), options
     )
     return ThermalState(raw)
 

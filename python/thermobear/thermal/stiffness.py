@@ -134,8 +134,7 @@ def thermal_stiffness_curve(
         float(axial_n),
         float(radial_n),
         _effects_arg(effects),
-        progress=progress,
-        **_model_kwargs(
+        _model_kwargs(
             lubricant,
             lubrication_factor_f0,
             spin_friction,
@@ -149,6 +148,7 @@ def thermal_stiffness_curve(
             churning_oil_fraction,
             **heat,
         ),
+        progress=progress,
     )
     df = pl.DataFrame({k: np.asarray(v) for k, v in cols.items()})
     return df.with_columns(pl.Series("speed_rpm", speeds)).with_columns(
