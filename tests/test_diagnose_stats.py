@@ -373,3 +373,36 @@ def test_without_a_sigma_column_the_intervals_stretch_with_the_scatter():
         assert a["lower_95"] <= 1.2 <= a["upper_95"]
         widths.append(a["upper_95"] - a["lower_95"])
     assert 1.5 < widths[1] / widths[0] < 2.6
+
+
+def test_in_diagnosis_joint_refit_gives_the_profile_intervals_of_calibrate():
+    """Two effects accepted in one diagnosis (a lubrication factor 30 % high
+    and a +1.5 K outer-ring thermocouple offset on a hybrid 6208) are
+    re-calibrated together; their values and 95 % intervals are those of
+    :func:`thermobear.calibrate` on the same points (profile likelihood,
+    the other parameter re-fitted at each trial value), and cover the truth."""
+    from thermobear import diagnosis as D
+
+    qs = ["temperature_c:To", "temperature_c:Ti", "heat_w"]
+    sp = np.linspace(2000.0, 12000.0, 6)
+    cond = pl.DataFrame(
+        {"speed_rpm": np.repeat(sp, len(qs)), "axial_n": 0.0, "radial_n": 2000.0,
+         "quantity": qs * len(sp)}
+    )  # fmt: skip
+    spec = D.BearingModelSpec(tb.Bearing.preset("6208-hybrid"))
+    to = (cond["quantity"] == "temperature_c:To").to_numpy()
+    meas = D.synthetic_measurements(spec.with_setting(lubrication_factor_f0=1.3), cond, 1.0, 3)
+    meas = meas.with_columns(pl.col("value") + pl.Series(np.where(to, 1.5, 0.0)))
+    d = tb.diagnose(spec, meas, holdout=None, suggest=False)
+    names = [a["name"] for a in d.accepted]
+    assert sorted(names) == ["lubrication_factor_f0", "sensor_offset:temperature_c:To"]
+    assert all(a["joint"] for a in d.accepted)
+    c = tb.calibrate([(spec, meas)], names).parameters
+    truth = {"lubrication_factor_f0": 1.3, "sensor_offset:temperature_c:To": 1.5}
+    for a in d.accepted:
+        row = c.filter(pl.col("name") == a["name"]).row(0, named=True)
+        width = row["upper_95"] - row["lower_95"]
+        assert abs(a["value"] - row["value"]) < 0.01 * width
+        assert abs(a["lower_95"] - row["lower_95"]) < 0.02 * width
+        assert abs(a["upper_95"] - row["upper_95"]) < 0.02 * width
+        assert a["lower_95"] <= truth[a["name"]] <= a["upper_95"]

@@ -10,21 +10,36 @@ import numpy as np
 
 from ..errors import ThermobearError
 from .candidates import Candidate
+from .joint import _CHI2_95, _profile
 from .setting import _predict, _Setting
 from .statistics import fisher_identifiability
 from .ties import tie_members
+
+
+class _RefitProblem:
+    """The refit as :func:`~.joint._profile` reads a problem: bounds and
+    the residual/sigma of the training points against the parameters."""
+
+    def __init__(self, resid, lo: np.ndarray, hi: np.ndarray) -> None:
+        self.resid, self.lo, self.hi = resid, lo, hi
+
+    def chi2(self, theta) -> float:
+        r = self.resid(theta)
+        return float(r @ r)
 
 
 def joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_options):
     """Re-calibrate every accepted continuous parameter together (bounded
     least squares on the model itself, not the interpolant) once two or more
     are accepted: an effect calibrated alone absorbs part of the next one.
-    Intervals: +-1.96 standard errors from the Jacobian, (J^T J)^-1 scaled
-    by phi = max(1, reduced chi^2) (the linearised profile: exact for the
-    additive offsets, a close approximation near the optimum otherwise);
-    ``identified``: False for a parameter the Fisher information does not
-    identify (:func:`~.statistics.fisher_identifiability`).
-    Updates ``accepted`` in place; returns (setting, prediction) or None."""
+    Intervals: 95 % profile likelihood, as :func:`~.joint.calibrate` gives
+    them -- the values of one parameter where the chi^2, the others
+    re-calibrated at each trial value, stays within 3.84 phi of the minimum
+    (phi = max(1, reduced chi^2)); ``identified``: False for a parameter the
+    Fisher information does not identify
+    (:func:`~.statistics.fisher_identifiability`) or whose interval spans
+    both bounds. Updates ``accepted`` in place; returns (setting,
+    prediction) or None."""
     from scipy.optimize import least_squares
 
     idx = [i for i, c in enumerate(cands) if c.kind == "parameter"]
@@ -53,19 +68,26 @@ def joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_option
             x_scale=hi - lo,
             max_nfev=60,
         )
-        cov = np.linalg.inv(res.jac.T @ res.jac)
-    except (ThermobearError, np.linalg.LinAlgError):
+        chi_min = 2.0 * float(res.cost)
+        phi = max(1.0, chi_min / max(int(train.sum()) - len(idx), 1))
+        prob = _RefitProblem(resid, lo, hi)
+        # the linearised interval (J^T J)^-1 brackets the profile's edges
+        se = np.sqrt(np.clip(np.diag(np.linalg.pinv(res.jac.T @ res.jac)), 0.0, None) * phi)
+        intervals = [
+            _profile(prob, res.x, chi_min, k, _CHI2_95 * phi, 1.96 * se[k])
+            for k in range(len(idx))
+        ]
+    except (ThermobearError, ValueError, np.linalg.LinAlgError):
         return None
-    phi = max(1.0, 2.0 * float(res.cost) / max(int(train.sum()) - len(idx), 1))
-    se = np.sqrt(np.clip(np.diag(cov), 0.0, None) * phi)
     _, weak = fisher_identifiability(res.jac, hi - lo)
     for k, i in enumerate(idx):
+        a, b = intervals[k]
         accepted[i].update(
             value=float(res.x[k]),
-            lower_95=float(max(lo[k], res.x[k] - 1.96 * se[k])),
-            upper_95=float(min(hi[k], res.x[k] + 1.96 * se[k])),
+            lower_95=float(a),
+            upper_95=float(b),
             joint=True,
-            identified=k not in weak,
+            identified=k not in weak and not (a <= lo[k] and b >= hi[k]),
         )
     st = setting(res.x)
     return st, _predict(model, st, cond, quantity)

@@ -180,10 +180,12 @@ def _best_fit(prob: _Problem):
     return best
 
 
-def _profile(prob: _Problem, theta, chi_min, j, thr) -> tuple[float, float]:
+def _profile(prob: _Problem, theta, chi_min, j, thr, halfwidth=None) -> tuple[float, float]:
     """The 95 % profile-likelihood interval of slot ``j``: the others
     re-calibrated at each trial value; an edge is the bound when the
-    profile stays below the threshold up to it."""
+    profile stays below the threshold up to it. ``halfwidth``: a guess of
+    the interval's half width (e.g. 1.96 standard errors): the root is
+    first bracketed 1.5 guesses out, which saves profile evaluations."""
     from scipy.optimize import brentq
 
     free = np.ones(len(theta), dtype=bool)
@@ -199,12 +201,20 @@ def _profile(prob: _Problem, theta, chi_min, j, thr) -> tuple[float, float]:
         return chi - chi_min - thr
 
     edges = []
-    for bound in (prob.lo[j], prob.hi[j]):
-        if abs(bound - theta[j]) <= 1e-12 or excess(bound) <= 0.0:
+    tol = 1e-4 * (prob.hi[j] - prob.lo[j])
+    for sign, bound in ((-1.0, prob.lo[j]), (1.0, prob.hi[j])):
+        inner = theta[j]
+        if halfwidth is not None and np.isfinite(halfwidth) and halfwidth > 0.0:
+            guess = theta[j] + sign * 1.5 * halfwidth
+            if (guess - bound) * sign < 0.0:  # strictly inside the bounds
+                if excess(guess) > 0.0:
+                    edges.append(float(brentq(excess, theta[j], guess, xtol=tol)))
+                    continue
+                inner = guess
+        if abs(bound - inner) <= 1e-12 or excess(bound) <= 0.0:
             edges.append(float(bound))
             continue
-        tol = 1e-4 * (prob.hi[j] - prob.lo[j])
-        edges.append(float(brentq(excess, theta[j], bound, xtol=tol)))
+        edges.append(float(brentq(excess, inner, bound, xtol=tol)))
     return edges[0], edges[1]
 
 

@@ -148,7 +148,10 @@ def diagnose(
     """Diagnose the gap between ``model`` (a :class:`BearingModelSpec`,
     the baseline) and ``measured`` (anything :func:`load_measurements`
     reads). ``candidates``: names from :func:`candidates` (default: all of
-    them, with a sensor-offset decoy per measured quantity); ``holdout``:
+    them, with a sensor-offset decoy per measured quantity and, when the
+    data hold two or more load levels, a load-scale candidate per level:
+    ``axial_load_scale@<N>`` / ``radial_load_scale@<N>`` on a bearing,
+    ``preload_scale@<N>`` on a spindle); ``holdout``:
     the points of the extrapolation check -- ``"highest_speeds"`` (the top
     quarter of the distinct speeds), a fraction of the distinct speeds, run
     label(s), or None; ``envelope``: the operating range where an extra
@@ -162,7 +165,11 @@ def diagnose(
         max_rounds, delta_bic_min, tie_delta_bic, lookalike_cosine, suggest, envelope, control
     )
     full = prepare_measurements(measured, model.quantities, holdout)
-    pool = candidate_pool(model, full.quantity, candidates)
+    # with no names given, data at two or more load levels also screen one
+    # load-scale candidate per level (a load cell or preload off at one level)
+    pool = candidate_pool(
+        model, full.quantity, candidates, full.cond if candidates is None else None
+    )
     pool, outside = split_evaluable(pool)
     # the spec already carries the baseline effects and options; a setting adds to them
     pred0 = _predict(model, _Setting(), full.cond, full.quantity)
