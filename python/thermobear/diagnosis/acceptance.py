@@ -74,8 +74,7 @@ def joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_option
         # the linearised interval (J^T J)^-1 brackets the profile's edges
         se = np.sqrt(np.clip(np.diag(np.linalg.pinv(res.jac.T @ res.jac)), 0.0, None) * phi)
         intervals = [
-            _profile(prob, res.x, chi_min, k, _CHI2_95 * phi, 1.96 * se[k])
-            for k in range(len(idx))
+            _profile(prob, res.x, chi_min, k, _CHI2_95 * phi, 1.96 * se[k]) for k in range(len(idx))
         ]
     except (ThermobearError, ValueError, np.linalg.LinAlgError):
         return None
