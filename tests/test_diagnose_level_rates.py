@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 import polars as pl
 import pytest
+from diagnose_rates import hidden_runs, top_speed_sigma_real
 
 import thermobear as tb
 from thermobear import diagnosis as D
@@ -61,33 +62,6 @@ DESIGNS = {
 }
 
 
-def _top_speed_sigma(truth, base, cond) -> float:
-    pt, pb = truth.predict(cond), base.predict(cond)
-    q = cond["quantity"].to_list()
-    sig = D.typical_sigma(base.quantities, q, np.array([pb[qq][i] for i, qq in enumerate(q)]))
-    top = cond["speed_rpm"].to_numpy() == cond["speed_rpm"].max()
-    return max(abs(pt[q[i]][i] - pb[q[i]][i]) / sig[i] for i in np.flatnonzero(top))
-
-
-def _outcome(d, name) -> str:
-    names = [a["name"] for a in d.accepted]
-    if names == [name]:
-        return "right"
-    if name in d.tie or name in [a["name"] for a in d.unresolved]:
-        return "tie"
-    return "wrong" if names else "silent"
-
-
-def _interval(d, name):
-    for a in d.accepted + d.unresolved:
-        if a["name"] == name:
-            return a["lower_95"], a["upper_95"]
-    if d.ties is not None and name in d.ties["candidate"].to_list():
-        row = d.ties.filter(pl.col("candidate") == name).row(0, named=True)
-        return row["lower_95"], row["upper_95"]
-    return None
-
-
 def test_per_level_candidates_are_screened_only_with_two_levels():
     base = _base("7009C")
     two, _, _ = DESIGNS["7009C"]
@@ -106,15 +80,14 @@ def test_a_load_wrong_at_one_level_is_named_or_tied_and_covered(preset):
     cond, name, value = DESIGNS[preset]
     base = _base(preset)
     truth = base.with_setting(**{name: value})
-    assert 3.0 < _top_speed_sigma(truth, base, cond) < 4.0
-    out, covered, n = [], 0, 0
-    for s in range(40):
-        d = tb.diagnose(base, D.synthetic_measurements(truth, cond, 1.0, 90_000 + s), suggest=False)
-        out.append(_outcome(d, name))
-        iv = _interval(d, name)
-        if iv is not None:
-            n += 1
-            covered += iv[0] <= value <= iv[1]
+    assert 3.0 < top_speed_sigma_real(truth, base, cond) < 4.0
+    out, covered, n = hidden_runs(
+        base,
+        lambda s: D.synthetic_measurements(truth, cond, 1.0, s),
+        name,
+        value,
+        range(90_000, 90_040),
+    )
     assert out.count("right") + out.count("tie") >= 36 and out.count("wrong") <= 2, out
     assert n >= 36 and covered >= 0.9 * n, (covered, n)
 
@@ -133,7 +106,7 @@ def test_null_with_per_level_candidates_over_100_seeds(preset):
 def _at_sigma(base, cond, option, null, step, target=3.5):
     """``option`` moved so that the largest change at the top speed is
     ``target`` typical sigma (the change is close to linear in the option)."""
-    one = _top_speed_sigma(base.with_setting(**{option: null + step}), base, cond)
+    one = top_speed_sigma_real(base.with_setting(**{option: null + step}), base, cond)
     return null + target * step / one
 
 
@@ -150,15 +123,14 @@ def test_other_hidden_inputs_named_or_tied_and_covered(preset, option, null, ste
     base = _base(preset)
     value = _at_sigma(base, cond, option, null, step)
     truth = base.with_setting(**{option: value})
-    assert 3.0 < _top_speed_sigma(truth, base, cond) < 4.0
-    out, covered, n = [], 0, 0
-    for s in range(40):
-        d = tb.diagnose(base, D.synthetic_measurements(truth, cond, 1.0, 91_000 + s), suggest=False)
-        out.append(_outcome(d, option))
-        iv = _interval(d, option)
-        if iv is not None:
-            n += 1
-            covered += iv[0] <= value <= iv[1]
+    assert 3.0 < top_speed_sigma_real(truth, base, cond) < 4.0
+    out, covered, n = hidden_runs(
+        base,
+        lambda s: D.synthetic_measurements(truth, cond, 1.0, s),
+        option,
+        value,
+        range(91_000, 91_040),
+    )
     assert out.count("right") + out.count("tie") >= 36 and out.count("wrong") <= 2, out
     assert n >= 36 and covered >= 0.9 * n, (covered, n)
 
@@ -182,19 +154,12 @@ def test_a_displacement_probe_gain_error_is_named_or_tied_and_covered():
     sig = D.typical_sigma(base.quantities, cond["quantity"].to_list(), pred)
     g = float(3.5 * sig[top][0] / pred[top][0])
     assert 0.0 < g < 0.10  # inside the candidate's bounds
-    out, covered, n = [], 0, 0
-    for s in range(240):
-        m = D.synthetic_measurements(base, cond, 1.0, 93_000 + s)
-        m = m.with_columns(
-            pl.when(pl.col("quantity") == q)
-            .then(pl.col("value") * (1.0 + g))
-            .otherwise(pl.col("value"))
-        )
-        d = tb.diagnose(base, m, suggest=False)
-        out.append(_outcome(d, name))
-        iv = _interval(d, name)
-        if iv is not None:
-            n += 1
-            covered += iv[0] <= g <= iv[1]
+    gain = pl.when(pl.col("quantity") == q).then(pl.col("value") * (1.0 + g))
+
+    def measured(seed):
+        m = D.synthetic_measurements(base, cond, 1.0, seed)
+        return m.with_columns(gain.otherwise(pl.col("value")))
+
+    out, covered, n = hidden_runs(base, measured, name, g, range(93_000, 93_240))
     assert out.count("right") + out.count("tie") >= 0.9 * len(out), out
     assert covered >= 0.9 * n, (covered, n)

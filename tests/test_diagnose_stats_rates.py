@@ -19,6 +19,7 @@ from __future__ import annotations
 import numpy as np
 import polars as pl
 import pytest
+from diagnose_rates import hidden_runs, outcome, top_speed_sigma_real
 from diagnose_toy import Rig, conditions, measured, top_speed_sigma
 
 import thermobear as tb
@@ -36,15 +37,6 @@ DESIGNS = [
     (np.linspace(4000.0, 16000.0, 6), (300.0, 600.0),
      ("heat_w", "temperature_c:Ti", "temperature_c:To", "axial_stiffness_n_per_m"), ("1",)),
 ]  # fmt: skip
-
-
-def _outcome(d, name) -> str:
-    names = [a["name"] for a in d.accepted]
-    if names == [name]:
-        return "right"
-    if name in d.tie or name in [a["name"] for a in d.unresolved]:
-        return "tie"
-    return "wrong" if names else "silent"
 
 
 def _at_3_sigma(option, null, step, cond):
@@ -77,7 +69,7 @@ HIDDEN = [
 def test_hidden_candidate_at_3_sigma_named_or_tied(name, option, null, step):
     truth = _at_3_sigma(option, null, step, RICH)
     out = [
-        _outcome(tb.diagnose(BASE, measured(truth, RICH, 20_000 + s), suggest=False), name)
+        outcome(tb.diagnose(BASE, measured(truth, RICH, 20_000 + s), suggest=False), name)
         for s in range(30)
     ]
     assert out.count("right") + out.count("tie") >= 27, out
@@ -97,7 +89,7 @@ def test_sensor_offsets_named_not_physics():
         for s in range(30):
             m = measured(BASE, RICH, 30_000 + s)
             m = m.with_columns(change.otherwise(pl.col("value")).alias("value"))
-            out.append(_outcome(tb.diagnose(BASE, m, suggest=False), name))
+            out.append(outcome(tb.diagnose(BASE, m, suggest=False), name))
         assert out.count("right") + out.count("tie") >= 27 and out.count("wrong") <= 1, out
 
 
@@ -180,18 +172,6 @@ def test_real_model_null_over_100_seeds(preset):
     assert found <= 5
 
 
-def _interval(d, name):
-    """The 95 % interval of ``name`` as accepted, as a tie member or as an
-    unresolved candidate; None when it has none."""
-    for a in d.accepted + d.unresolved:
-        if a["name"] == name:
-            return a["lower_95"], a["upper_95"]
-    if d.ties is not None and name in d.ties["candidate"].to_list():
-        row = d.ties.filter(pl.col("candidate") == name).row(0, named=True)
-        return row["lower_95"], row["upper_95"]
-    return None
-
-
 @pytest.mark.parametrize(
     "preset,option,value,name",
     [
@@ -205,24 +185,15 @@ def test_real_model_hidden_input_named_or_tied_and_covered(preset, option, value
     truth = _real(preset, **{option: value})
     assert top_speed_sigma_real(truth, base, cond) > 3.0
     truth_value = value - base.options[option] if name.endswith("_offset_k") else value
-    out, covered, n = [], 0, 0
-    for s in range(60):
-        d = tb.diagnose(base, D.synthetic_measurements(truth, cond, 1.0, 70_000 + s), suggest=False)
-        out.append(_outcome(d, name))
-        iv = _interval(d, name)
-        if iv is not None:
-            n += 1
-            covered += iv[0] <= truth_value <= iv[1]
+    out, covered, n = hidden_runs(
+        base,
+        lambda s: D.synthetic_measurements(truth, cond, 1.0, s),
+        name,
+        truth_value,
+        range(70_000, 70_060),
+    )
     assert out.count("right") + out.count("tie") >= 54 and out.count("wrong") <= 3, out
     assert n >= 54 and covered >= 0.9 * n, (covered, n)
-
-
-def top_speed_sigma_real(truth, base, cond) -> float:
-    pt, pb = truth.predict(cond), base.predict(cond)
-    q = cond["quantity"].to_list()
-    top = cond["speed_rpm"].to_numpy() == cond["speed_rpm"].max()
-    sig = D.typical_sigma(base.quantities, q, np.array([pb[qq][i] for i, qq in enumerate(q)]))
-    return max(abs(pt[q[i]][i] - pb[q[i]][i]) / sig[i] for i in np.flatnonzero(top))
 
 
 def test_real_model_thermocouple_offset_interval_covers():
@@ -232,15 +203,11 @@ def test_real_model_thermocouple_offset_interval_covers():
     base, cond = _real("6208"), _real_conditions("6208")
     to = pl.col("quantity") == "temperature_c:To"
     name = "sensor_offset:temperature_c:To"
-    out, covered, n = [], 0, 0
-    for s in range(60):
-        m = D.synthetic_measurements(base, cond, 1.0, 80_000 + s)
-        m = m.with_columns(pl.when(to).then(pl.col("value") + 2.0).otherwise(pl.col("value")))
-        d = tb.diagnose(base, m, suggest=False)
-        out.append(_outcome(d, name))
-        iv = _interval(d, name)
-        if iv is not None:
-            n += 1
-            covered += iv[0] <= 2.0 <= iv[1]
+
+    def offset(seed):
+        m = D.synthetic_measurements(base, cond, 1.0, seed)
+        return m.with_columns(pl.when(to).then(pl.col("value") + 2.0).otherwise(pl.col("value")))
+
+    out, covered, n = hidden_runs(base, offset, name, 2.0, range(80_000, 80_060))
     assert out.count("right") + out.count("tie") >= 54 and out.count("wrong") <= 3, out
     assert n >= 54 and covered >= 0.9 * n, (covered, n)
