@@ -137,3 +137,31 @@ def test_bad_heat_model_input_names_the_field(b7009):
         tb.thermal_state(b7009, 6000, 400.0, 0.0, heat_model="skf", sliding_friction_ehl=0.9)
     with pytest.raises(tb.ConfigError, match="lubrication"):
         tb.thermal_state(b7009, 6000, 400.0, 0.0, lubrication="water")
+
+
+def test_isothermal_heat_is_the_friction_model_at_the_given_oil_temperature():
+    import numpy as np
+
+    b = tb.Bearing.preset("6208")
+    h = tb.isothermal_heat(b, 6000.0, 300.0, 1000.0, oil_temperature_c=60.0, lubricant="ISO VG 32")
+    # Palmgren viscous heat by hand: 1e-7 f0 (nu n)^(2/3) dm^3 [N mm] x omega
+    nu, dm = h.viscosity_cst, b.geometry["pitch_diameter_mm"]
+    mv = 1e-7 * 1.0 * (nu * 6000.0) ** (2 / 3) * dm**3 * 1e-3
+    viscous = h.heat.filter(h.heat["source"] == "viscous")["heat_w"][0]
+    assert viscous == pytest.approx(mv * 6000.0 * np.pi / 30.0, rel=1e-12)
+    assert h.heat["heat_w"].sum() == pytest.approx(h.total_heat_w, rel=1e-12)
+    # thinner oil, less heat; the rows of the SKF model sum to its total too
+    hot = tb.isothermal_heat(
+        b, 6000.0, 300.0, 1000.0, oil_temperature_c=90.0, lubricant="ISO VG 32"
+    )
+    assert hot.viscosity_cst < nu and hot.total_heat_w < h.total_heat_w
+    skf = tb.isothermal_heat(b, 6000.0, 300.0, 1000.0, oil_temperature_c=60.0,
+                             lubricant="ISO VG 32", heat_model="skf")  # fmt: skip
+    assert list(skf.heat["source"]) == ["rolling", "sliding", "seal", "extra", "churning"]
+    assert skf.heat["heat_w"].sum() == pytest.approx(skf.total_heat_w, rel=1e-12)
+    with pytest.raises(tb.ConfigError, match="oil_temperature_c"):
+        tb.isothermal_heat(b, 6000.0, 300.0, 1000.0, oil_temperature_c=float("nan"))
+    with pytest.raises(tb.ConfigError, match="speed_rpm"):
+        tb.isothermal_heat(b, -1.0, 300.0, 1000.0, oil_temperature_c=60.0)
+    with pytest.raises(tb.ConfigError, match="no_such"):
+        tb.isothermal_heat(b, 6000.0, oil_temperature_c=60.0, no_such=1.0)

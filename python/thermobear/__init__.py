@@ -77,7 +77,9 @@ from .spindle import (
 )
 from .study import Study, load_study
 from .thermal import (
+    IsothermalHeat,
     ThermalState,
+    isothermal_heat,
     lubrication_defaults,
     stiffness_curve,
     thermal_state,
@@ -126,7 +128,9 @@ __all__ = [
     "Bearing",
     "BearingSolution",
     "Material",
+    "IsothermalHeat",
     "ThermalState",
+    "isothermal_heat",
     "lubrication_defaults",
     "stiffness_curve",
     "thermal_state",

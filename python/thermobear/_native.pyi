@@ -422,6 +422,19 @@ def thermal_state(
     effects: Optional[Sequence[str]],
     settings: dict[str, Any],
 ) -> dict[str, Any]: ...
+def isothermal_heat(
+    bearing: Bearing,
+    speed_rpm: float,
+    axial_n: float,
+    radial_n: float,
+    oil_temperature_c: float,
+    effects: Optional[Sequence[str]],
+    settings: dict[str, Any],
+) -> dict[str, Any]:
+    """Heat rows of :func:`thermal_state` (no nodes, boundaries or
+    deformations) with the oil held at ``oil_temperature_c``, on the
+    isothermal bearing state (``solution``)."""
+
 def thermal_stiffness_curve(
     bearing: Bearing,
     speeds_rpm: npt.NDArray[np.float64],

@@ -13,7 +13,7 @@ use super::solve::{curve_columns, solve_options, state_dict, tilt_option};
 use crate::bearing::BearingType;
 use crate::bearing::{Bearing, BearingState};
 use crate::error::{finite, Result};
-use crate::thermal::coupled::{seed_a_mounting, CoupledBearing, CoupledOptions, ThermalState};
+use crate::thermal::coupled::{seed_a_mounting, CoupledBearing, CoupledOptions, HeatReport, ThermalState};
 use crate::thermal::friction::{resolve_lubrication, HeatModel, Lubrication, SkfSeries, SkfSettings};
 use crate::thermal::presets::SeedAParams;
 use crate::thermal::Lubricant;
@@ -90,11 +90,9 @@ impl Settings {
     }
 }
 
-fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    d.set_item("node", s.node_names.clone())?;
-    d.set_item("temperature_c", s.temperatures_c.clone().into_pyarray(py))?;
-    let h = &s.heat;
+/// The heat entries of a result dict (rows by mechanism, split to the
+/// parts, moments, oil state), shared by the coupled and isothermal calls.
+fn heat_items(py: Python<'_>, d: &Bound<'_, PyDict>, h: &HeatReport) -> PyResult<()> {
     let sources = if h.skf.is_some() {
         vec!["rolling", "sliding", "seal", "extra", "churning"]
     } else {
@@ -125,6 +123,22 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
         "part_heat_w",
         vec![h.split.inner_ring_w, h.split.balls_w, h.split.outer_ring_w].into_pyarray(py),
     )?;
+    d.set_item("oil_temperature_c", h.oil_temperature_c)?;
+    d.set_item("viscosity_cst", h.viscosity_cst)?;
+    d.set_item("load_moment_nmm", h.load_moment_n_m * 1e3)?;
+    d.set_item("viscous_moment_nmm", h.viscous_moment_n_m * 1e3)?;
+    d.set_item("total_heat_w", h.heat.total_w())?;
+    d.set_item("churning_w", h.churning_w)?;
+    d.set_item("cage_speed_rad_s", h.cage_speed_rad_s)?;
+    d.set_item("oil_density_kg_m3", h.oil_density_kg_m3)?;
+    Ok(())
+}
+
+fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("node", s.node_names.clone())?;
+    d.set_item("temperature_c", s.temperatures_c.clone().into_pyarray(py))?;
+    heat_items(py, &d, &s.heat)?;
     d.set_item(
         "boundary",
         s.boundary_flows_w.iter().map(|b| b.0.clone()).collect::<Vec<_>>(),
@@ -162,14 +176,6 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
     d.set_item("iterations", s.iterations)?;
     d.set_item("residual_k", s.residual_k)?;
     d.set_item("offset_change_m", s.offset_change_m)?;
-    d.set_item("oil_temperature_c", h.oil_temperature_c)?;
-    d.set_item("viscosity_cst", h.viscosity_cst)?;
-    d.set_item("load_moment_nmm", h.load_moment_n_m * 1e3)?;
-    d.set_item("viscous_moment_nmm", h.viscous_moment_n_m * 1e3)?;
-    d.set_item("total_heat_w", h.heat.total_w())?;
-    d.set_item("churning_w", h.churning_w)?;
-    d.set_item("cage_speed_rad_s", h.cage_speed_rad_s)?;
-    d.set_item("oil_density_kg_m3", h.oil_density_kg_m3)?;
     Ok(d)
 }
 
@@ -195,6 +201,35 @@ pub fn thermal_state<'py>(
         })
         .py_err()?;
     thermal_dict(py, &c, &s)
+}
+
+/// Heat of one bearing with the oil held at `oil_temperature_c` and no
+/// thermal deformation (the friction model alone, no network).
+#[pyfunction]
+#[pyo3(signature = (bearing, speed_rpm, axial_n, radial_n, oil_temperature_c, effects, settings))]
+#[allow(clippy::too_many_arguments)]
+pub fn isothermal_heat<'py>(
+    py: Python<'py>,
+    bearing: &PyBearing,
+    speed_rpm: f64,
+    axial_n: f64,
+    radial_n: f64,
+    oil_temperature_c: f64,
+    effects: Option<Vec<String>>,
+    settings: Settings,
+) -> PyResult<Bound<'py, PyDict>> {
+    let b = &bearing.inner;
+    let (state, h) = py
+        .detach(|| -> Result<(BearingState, HeatReport)> {
+            let c = settings.build(b, effects)?;
+            c.isothermal_heat(speed_rpm, axial_n, radial_n, oil_temperature_c)
+        })
+        .py_err()?;
+    let d = PyDict::new(py);
+    heat_items(py, &d, &h)?;
+    d.set_item("speed_rpm", speed_rpm)?;
+    d.set_item("solution", state_dict(py, &state)?)?;
+    Ok(d)
 }
 
 /// Thermal stiffness curve: the coupled state at every speed, in parallel.
@@ -420,6 +455,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(seed_a_network_links, m)?)?;
     m.add_function(wrap_pyfunction!(seed_a_steady_temperatures, m)?)?;
     m.add_function(wrap_pyfunction!(thermal_state, m)?)?;
+    m.add_function(wrap_pyfunction!(isothermal_heat, m)?)?;
     m.add_function(wrap_pyfunction!(thermal_stiffness_curve, m)?)?;
     m.add_function(wrap_pyfunction!(thermal_state_many, m)?)?;
     m.add_function(wrap_pyfunction!(lubrication_defaults, m)?)?;

@@ -64,7 +64,7 @@ use crate::bearing::contact::{curvature, hamrock_brewe};
 use crate::bearing::quasi_static::{static_start_q, WarmStart};
 use crate::bearing::{Bearing, BearingModel, BearingState, Raceway, RacewayOffsets, SolveOptions};
 use crate::effects::{Effect, EffectSet};
-use crate::error::{in_range, non_negative, positive, Error, Result};
+use crate::error::{finite, in_range, non_negative, positive, Error, Result};
 use crate::units::rpm_to_rad_s;
 
 /// Growth streak that declares a runaway (see module docs).
@@ -510,6 +510,43 @@ impl CoupledBearing {
         Ok(())
     }
 
+    /// Heat of the bearing at one operating point with the oil held at
+    /// `oil_c` (its viscosity and density taken there) and no thermal
+    /// deformation: the friction model of [`operating_heat`] on the
+    /// isothermal bearing state, without the thermal network. For conditions
+    /// that fix the bearing temperature, such as the ISO 15312 reference
+    /// conditions (docs/concepts/physics.md §9, "Reference speed").
+    pub fn isothermal_heat(
+        &self,
+        speed_rpm: f64,
+        axial_n: f64,
+        radial_n: f64,
+        oil_c: f64,
+    ) -> Result<(BearingState, HeatReport)> {
+        positive("speed_rpm", speed_rpm)?;
+        finite("axial_n", axial_n)?;
+        finite("radial_n", radial_n)?;
+        self.params.lubricant.check_temperature(oil_c)?;
+        let load = [radial_n, 0.0, axial_n, 0.0, 0.0];
+        let mut opts = self.options.solve;
+        opts.offsets = RacewayOffsets::default();
+        let start = static_start_q(&self.model, &load, &opts)?;
+        let state = self
+            .model
+            .solve_from(&load, speed_rpm, &opts, start, &mut WarmStart::new())?;
+        let bearing = self.model.bearing();
+        let heat = operating_heat(
+            bearing,
+            &state,
+            axial_n,
+            radial_n,
+            &self.params.lubricant,
+            oil_c,
+            &self.options,
+        )?;
+        Ok((state, heat))
+    }
+
     /// The coupled steady state at `speed_rpm` under an axial and a radial
     /// load (N; the applied load of the bearing, preload included).
     pub fn solve(&self, speed_rpm: f64, axial_n: f64, radial_n: f64) -> Result<ThermalState> {
@@ -826,6 +863,45 @@ mod tests {
         assert_eq!(s.bearing.stiffness_matrix_si, iso.stiffness_matrix_si);
         assert_eq!(s.raceway_offsets, RacewayOffsets::default());
         assert!(s.heat.heat.total_w() > 0.0);
+    }
+
+    #[test]
+    fn isothermal_heat_is_the_friction_model_at_the_given_oil_temperature() {
+        // Palmgren viscous moment by hand: 1e-7 f0 (nu n)^(2/3) dm^3
+        // [N mm, dm in mm] with nu of the lubricant at the given temperature.
+        let c = seed_a(EffectSet::all());
+        let (state, h) = c.isothermal_heat(8_000.0, FA, FR, 70.0).unwrap();
+        let lub = &c.params().lubricant;
+        let nu = lub.kinematic_viscosity_cst(70.0).unwrap();
+        assert_eq!(h.viscosity_cst, nu);
+        let dm_mm = c.model().bearing().geometry.pitch_diameter_m * 1e3;
+        let f0 = c.options().lubrication_factor_f0;
+        let mv = 1e-7 * f0 * (nu * 8_000.0).powf(2.0 / 3.0) * dm_mm.powi(3) * 1e-3;
+        assert!((h.viscous_moment_n_m - mv).abs() <= 1e-12 * mv.max(1.0));
+        // the isothermal bearing state is the model's own solve
+        let iso = c
+            .model()
+            .solve(&[FR, 0.0, FA, 0.0, 0.0], 8_000.0, &c.options().solve)
+            .unwrap();
+        for k in 0..5 {
+            assert!((state.displacement_m_rad[k] - iso.displacement_m_rad[k]).abs() <= 1e-12);
+        }
+        // a hotter oil is thinner: less viscous loss, same load moment
+        let (_, hot) = c.isothermal_heat(8_000.0, FA, FR, 100.0).unwrap();
+        assert!(hot.viscous_moment_n_m < h.viscous_moment_n_m);
+        assert_eq!(hot.load_moment_n_m, h.load_moment_n_m);
+        // and equals the coupled solve's heat when that solve holds the oil
+        // at the oil-air temperature (no temperature-dependent viscosity,
+        // no expansion)
+        let e = thermal_off().without(Effect::TemperatureDependentViscosity);
+        let cold = seed_a(e);
+        let s = cold.solve(8_000.0, FA, FR).unwrap();
+        let (_, same) = cold
+            .isothermal_heat(8_000.0, FA, FR, cold.params().oil_air_temperature_c)
+            .unwrap();
+        assert!((same.heat.total_w() - s.heat.heat.total_w()).abs() <= 1e-9 * s.heat.heat.total_w());
+        assert!(c.isothermal_heat(8_000.0, FA, FR, f64::NAN).is_err());
+        assert!(c.isothermal_heat(-1.0, FA, FR, 70.0).is_err());
     }
 
     #[test]

@@ -4,6 +4,7 @@ and thermal models (crate: ``src/thermal``, bindings
 ``src/python/thermal.rs``)."""
 
 from .batch import thermal_state_many
+from .isothermal import IsothermalHeat, isothermal_heat
 from .state import (
     HEAT_MODEL_OPTIONS,
     THERMAL_EFFECTS,
@@ -15,8 +16,10 @@ from .stiffness import stiffness_curve, thermal_stiffness_curve
 
 __all__ = [
     "HEAT_MODEL_OPTIONS",
+    "IsothermalHeat",
     "THERMAL_EFFECTS",
     "ThermalState",
+    "isothermal_heat",
     "lubrication_defaults",
     "stiffness_curve",
     "thermal_state",

@@ -13,7 +13,11 @@ the points and the error reported on the points held out.
   of spindle-bearing pairs (:mod:`.catalogue`);
 * ``ntn_ultage_rigidity`` -- NTN catalogue radial and axial rigidity of 95
   spindle-bearing pairs of two series and two contact angles
-  (:mod:`.catalogue`).
+  (:mod:`.catalogue`);
+* ``skf_reference_speed_62`` -- SKF catalogue reference speeds of 27
+  deep-groove bearings as a heat balance under the ISO 15312 reference
+  conditions: which heat model reproduces the published friction heat?
+  (:mod:`.reference_speed`).
 
 :func:`validate` runs them and writes the report (:mod:`.report`).
 """
@@ -32,6 +36,7 @@ __all__ = ["SetResult", "load_set", "run_set", "set_names", "validate"]
 def run_set(name: str) -> SetResult:
     """Validate one shipped set by name (see :func:`set_names`)."""
     from .catalogue import run_catalogue
+    from .reference_speed import run_reference_speed
     from .spindle import run_spindle
     from .vibration import run_vibration
 
@@ -40,6 +45,7 @@ def run_set(name: str) -> SetResult:
         "spindle": run_spindle,
         "spindle_vibration": run_vibration,
         "bearing_catalogue": run_catalogue,
+        "reference_speed": run_reference_speed,
     }[data["kind"]]
     return runner(data)
 

@@ -37,12 +37,18 @@ def load_set(name: str) -> dict[str, Any]:
 def points_frame(data: dict) -> "polars.DataFrame":  # noqa: F821
     """The set's points as a polars frame: its ``[[points]]``, or for a
     catalogue set the rows expanded from ``[[bearings]]``
-    (:func:`thermobear.validation.catalogue.catalogue_points`); every row has
+    (:func:`thermobear.validation.catalogue.catalogue_points`) or, for a
+    reference-speed set, one row per bearing
+    (:func:`thermobear.validation.reference_speed.reference_points`); every row has
     ``quantity``, ``value`` and ``sigma``."""
     import polars as pl
 
     if "points" in data:
         return pl.DataFrame(data["points"])
+    if data.get("kind") == "reference_speed":
+        from .reference_speed import reference_points
+
+        return reference_points(data)
     from .catalogue import catalogue_points
 
     return catalogue_points(data)
