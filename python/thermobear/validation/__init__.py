@@ -10,7 +10,10 @@ the points and the error reported on the points held out.
 * ``seed_b_vibration`` -- seed B's measured 18.92 mm/s: unbalance, runout
   or thermal displacement? (:mod:`.vibration`, issue 12 item 9);
 * ``fag_b70c_rigidity`` -- FAG catalogue axial rigidity and lift-off force
-  of two spindle-bearing pairs (:mod:`.catalogue`).
+  of spindle-bearing pairs (:mod:`.catalogue`);
+* ``ntn_ultage_rigidity`` -- NTN catalogue radial and axial rigidity of 95
+  spindle-bearing pairs of two series and two contact angles
+  (:mod:`.catalogue`).
 
 :func:`validate` runs them and writes the report (:mod:`.report`).
 """

@@ -20,12 +20,17 @@ def _figure(r: SetResult, out: Path) -> Path:
     z0 = (p["model_before"] - p["value"]).to_numpy() / p["sigma"].to_numpy()
     z1 = (p["model_after"] - p["value"]).to_numpy() / p["sigma"].to_numpy()
     x = np.arange(p.height)
-    fig, ax = plt.subplots(figsize=(7.5, 3.2 + 0.15 * p.height))
+    fig, ax = plt.subplots(figsize=(7.5, 3.2 + 0.15 * min(p.height, 80)))
     ax.barh(x - 0.2, np.clip(z0, -50, 50), 0.4, label="baseline")
     ax.barh(x + 0.2, np.clip(z1, -50, 50), 0.4, label="after calibration")
     held = p["heldout"].to_numpy()
+    every = max(1, p.height // 80)  # at most about 80 labels on a large set
     ax.set_yticks(
-        x, [f"{lab}{' (held out)' if h else ''}" for lab, h in zip(p["label"], held, strict=True)]
+        x[::every],
+        [f"{lab}{' (held out)' if h else ''}" for lab, h in zip(p["label"], held, strict=True)][
+            ::every
+        ],
+        fontsize=8 if every == 1 else 5,
     )
     ax.axvspan(-2, 2, color="0.9", zorder=0, label="within 2 sigma")
     ax.set_xlabel("(model - published) / sigma (clipped at +-50)")
