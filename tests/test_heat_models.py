@@ -128,6 +128,25 @@ def test_spindle_heat_model_and_lubrication(b7009):
         sp.with_options(churning_oil_fraction=2.0)
 
 
+def test_skf_series_single_row_angular_contact_names(b7009):
+    # SKF General Catalogue 6000 (2006), friction chapter, table 3 (p. 92):
+    # one row of constants for every single-row angular-contact series, so
+    # "72B" and "73B" (which used to hold the double-row row) name it, and
+    # it is the angular-contact default; table 3a (p. 93) groups 60/630.
+    kw = {"heat_model": "skf", "lubrication": "jet", "lubricant": "ISO VG 32"}
+    heats = [
+        tb.thermal_state(b7009, 15_000, 400.0, 0.0, skf_series=s, **kw).total_heat_w
+        for s in (None, "angular-single-row", "72B", "73B", "73 b")
+    ]
+    assert heats == [heats[0]] * 5
+    b6208 = tb.Bearing.preset("6208")
+    a, b = (tb.thermal_state(b6208, 3000, 0.0, 3000.0, skf_series=s, **kw).total_heat_w
+            for s in ("60", "630"))  # fmt: skip
+    assert a == b
+    with pytest.raises(tb.ConfigError, match=r"angular-single-row \(72B, 73B\)"):
+        tb.thermal_state(b7009, 6000, 400.0, 0.0, heat_model="skf", skf_series="33D")
+
+
 def test_bad_heat_model_input_names_the_field(b7009):
     with pytest.raises(tb.ConfigError, match="heat_model"):
         tb.thermal_state(b7009, 6000, 400.0, 0.0, heat_model="harris")

@@ -16,7 +16,7 @@ fn dg_point(fr: f64, fa: f64, n: f64, nu: f64) -> SkfInputs {
         axial_n: fa,
         speed_rpm: n,
         viscosity_cst: nu,
-        centrifugal_load_n: None,
+        centrifugal_load: SkfCentrifugalLoad::CatalogueSteelBalls,
     }
 }
 
@@ -54,10 +54,10 @@ fn skf_deep_groove_moments_match_a_hand_calculation() {
 
 #[test]
 fn skf_angular_contact_hand_value_with_centrifugal_terms() {
-    // 72 B: R = (5.03e-7, 1.97, 1.90e-12), S = (1.30e-2, 0.68, 1.91e-12),
+    // Single row: R = (5.03e-7, 1.97, 1.90e-12), S = (1.30e-2, 0.68, 1.91e-12),
     // K_z = 4.4. Fr = 500 N, Fa = 1000 N, 12,000 rpm, 10 cSt, dm = 60 mm.
     let i = dg_point(500.0, 1000.0, 12_000.0, 10.0);
-    let m = skf_moments(SkfSeries::AngularContact72B, &i, 0.05, 3e-8).unwrap();
+    let m = skf_moments(SkfSeries::AngularContactSingleRow, &i, 0.05, 3e-8).unwrap();
     let (dm, n, nu) = (60.0f64, 12_000.0f64, 10.0f64);
     let fg_r = 1.90e-12 * dm.powi(4) * n * n;
     let fg_s = 1.91e-12 * dm.powi(4) * n * n;
@@ -72,11 +72,203 @@ fn skf_angular_contact_hand_value_with_centrifugal_terms() {
     assert!((m.sliding_n_m - m_sl).abs() < 1e-12 * m_sl);
     // A given centrifugal load replaces both fits.
     let mut j = i;
-    j.centrifugal_load_n = Some(0.0);
-    let z = skf_moments(SkfSeries::AngularContact72B, &j, 0.05, 3e-8).unwrap();
+    j.centrifugal_load = SkfCentrifugalLoad::Given { load_n: 0.0 };
+    let z = skf_moments(SkfSeries::AngularContactSingleRow, &j, 0.05, 3e-8).unwrap();
     let g0 = 5.03e-7 * dm.powf(1.97) * (500.0f64 + 1.97 * 1000.0).powf(0.54);
     assert!((z.rolling_n_m - ish * rs * g0 * (nu * n).powf(0.6) * 1e-3).abs() < 1e-12);
     assert!(fg_r > 0.0 && z.rolling_n_m < m.rolling_n_m);
+}
+
+#[test]
+fn skf_constants_are_the_catalogue_tables() {
+    // SKF General Catalogue 6000 (2006), chapter "Friction" (Russian
+    // translation 6000 RU). Table 3a, p. 93, deep-groove ball bearings
+    // (R1, R2, S1, S2): 60/630 4.1e-7 1.7 3.73e-3 14.6; 62/622 3.9e-7 1.7
+    // 3.23e-3 36.5; 63/623 3.7e-7 1.7 2.84e-3 92.8; 64 3.6e-7 1.7 2.43e-3
+    // 198. Table 3, p. 92, angular-contact ball bearings, single row (R1,
+    // R2, R3, S1, S2, S3): 5.03e-7 1.97 1.90e-12 1.30e-2 0.68 1.91e-12.
+    // Table 5, p. 98, K_z: deep-groove 3.1, angular-contact single row 4.4.
+    let dg = [
+        (SkfSeries::DeepGroove60, [4.1e-7, 1.7, 3.73e-3, 14.6]),
+        (SkfSeries::DeepGroove62, [3.9e-7, 1.7, 3.23e-3, 36.5]),
+        (SkfSeries::DeepGroove63, [3.7e-7, 1.7, 2.84e-3, 92.8]),
+        (SkfSeries::DeepGroove64, [3.6e-7, 1.7, 2.43e-3, 198.0]),
+    ];
+    for (series, [r1, r2, s1, s2]) in dg {
+        let c = series.constants();
+        assert_eq!(
+            (c.r, c.s, c.kz),
+            ([r1, r2, 0.0], [s1, s2, 0.0], 3.1),
+            "{}",
+            series.name()
+        );
+        assert_eq!(series.bearing_type(), BearingType::DeepGroove);
+    }
+    let a = SkfSeries::AngularContactSingleRow.constants();
+    assert_eq!(a.r, [5.03e-7, 1.97, 1.90e-12]);
+    assert_eq!(a.s, [1.30e-2, 0.68, 1.91e-12]);
+    assert_eq!(a.kz, 4.4);
+    // The 2006 edition has one row for every single-row angular-contact
+    // series: "72B" and "73B" are names of it. "73B" used to hold table 3's
+    // double-row row (R1 6.34e-7, R2 1.41, R3 7.83e-13, S1 7.56e-3, S2
+    // 1.21, S3 7.83e-13, K_z 3.1); no series has it now.
+    for name in ["72B", "73B", "72 b", "73-B", "angular-single-row", "Angular single_row"] {
+        assert_eq!(
+            SkfSeries::from_name(name).unwrap(),
+            SkfSeries::AngularContactSingleRow,
+            "{name}"
+        );
+    }
+    let double_row = ([6.34e-7, 1.41, 7.83e-13], [7.56e-3, 1.21, 7.83e-13]);
+    assert!(SkfSeries::ALL
+        .iter()
+        .all(|s| (s.constants().r, s.constants().s) != double_row));
+    // Aliases from the series table 3a groups; every name parses back.
+    assert_eq!(SkfSeries::from_name("630").unwrap(), SkfSeries::DeepGroove60);
+    assert_eq!(SkfSeries::from_name("622").unwrap(), SkfSeries::DeepGroove62);
+    assert_eq!(SkfSeries::from_name("623").unwrap(), SkfSeries::DeepGroove63);
+    for s in SkfSeries::ALL {
+        assert_eq!(SkfSeries::from_name(s.name()).unwrap(), s);
+    }
+    assert_eq!(
+        SkfSeries::default_for(BearingType::AngularContact),
+        SkfSeries::AngularContactSingleRow
+    );
+    match SkfSeries::from_name("33D") {
+        Err(Error::Config { field, reason, .. }) => {
+            assert_eq!(field, "skf_series");
+            assert!(reason.contains("angular-single-row (72B, 73B)"), "{reason}");
+        }
+        other => panic!("{other:?}"),
+    }
+    // Saved settings of earlier versions still load.
+    for old in ["\"AngularContact72B\"", "\"AngularContact73B\""] {
+        let s: SkfSeries = serde_json::from_str(old).unwrap();
+        assert_eq!(s, SkfSeries::AngularContactSingleRow);
+    }
+}
+
+#[test]
+fn skf_deep_groove_with_thrust_matches_a_hand_calculation() {
+    // Table 2a (p. 91) deep-groove branch with Fa > 0, 62 series, a
+    // 6208-size point (d = 40, D = 80, dm = 60 mm, C0 = 19 kN), Fr = 2 kN,
+    // Fa = 1 kN, 3000 rpm, 20 mm^2/s, K_rs = 6e-8, mu_EHL = 0.05. By hand:
+    //   a_F = 24.6 (1000/19000)^0.24 = 12.135 deg, sin a_F = 0.210 21
+    //   G_rr = 3.9e-7 60^1.96 (2000 + 1.7/0.210 21 * 1000)^0.54 = 0.173 09
+    //   G_sl = 3.23e-3 60^-0.145 (2000^5 + 36.5 60^1.5 1000^4 / 0.210 21)^(1/3)
+    //        = 861.7
+    //   phi_ish = 0.937 46, phi_rs = 0.918 48 (as in the Fa = 0 case)
+    //   M_rr = 0.937 46 * 0.918 48 * 0.173 09 * 60000^0.6 = 109.7 N mm
+    //   phi_bl = 4.9e-4 -> mu_sl = 0.050 05, M_sl = 43.1 N mm
+    let m = skf_moments(
+        SkfSeries::DeepGroove62,
+        &dg_point(2000.0, 1000.0, 3000.0, 20.0),
+        0.05,
+        6e-8,
+    )
+    .unwrap();
+    assert!((m.phi_ish - 0.93746).abs() < 1e-5 && (m.phi_rs - 0.91848).abs() < 1e-5);
+    assert!((m.rolling_n_m * 1e3 - 109.7).abs() < 0.05, "{}", m.rolling_n_m * 1e3);
+    assert!((m.sliding_n_m * 1e3 - 43.1).abs() < 0.05, "{}", m.sliding_n_m * 1e3);
+    // The thrust raises both moments over the Fa = 0 point.
+    let z = skf_moments(
+        SkfSeries::DeepGroove62,
+        &dg_point(2000.0, 0.0, 3000.0, 20.0),
+        0.05,
+        6e-8,
+    )
+    .unwrap();
+    assert!(m.rolling_n_m > z.rolling_n_m && m.sliding_n_m > z.sliding_n_m);
+}
+
+#[test]
+fn skf_angular_contact_catalogue_fit_and_hybrid_factor() {
+    // Table 2a (p. 91) angular-contact branch with the table 3 (p. 92)
+    // single-row constants and the fitted Fg, a 7208 B-size point (d = 40,
+    // D = 80, dm = 60 mm), Fr = 1 kN, Fa = 2 kN, 6000 rpm, 15 mm^2/s, K_rs =
+    // 3e-8 (oil jet), K_z = 4.4, mu_EHL = 0.05. By hand:
+    //   Fg = 1.90e-12 60^4 6000^2 = 886.5 N (rolling), 891.1 N (sliding)
+    //   G_rr = 5.03e-7 60^1.97 (1000 + 886.5 + 1.97 * 2000)^0.54 = 0.172 92
+    //   G_sl = 1.30e-2 60^0.26 (1891.1^(4/3) + 0.68 * 2000^(4/3)) = 1527.4
+    //   phi_ish = 0.881 24, phi_rs = exp(-3e-8 15 6000 120 sqrt(4.4/80)) = 0.926 83
+    //   M_rr = 0.881 24 * 0.926 83 * 0.172 92 * 90000^0.6 = 132.6 N mm
+    //   mu_sl = 0.05 (phi_bl = 1.4e-6), M_sl = 76.4 N mm
+    // Si3N4 balls, p. 102: 0.41 R3 and 0.41 S3, Fg = 363.5 / 365.4 N:
+    //   G_rr = 0.164 36, M_rr = 126.0 N mm; G_sl = 1216.8, M_sl = 60.8 N mm
+    let mut i = dg_point(1000.0, 2000.0, 6000.0, 15.0);
+    let steel = skf_moments(SkfSeries::AngularContactSingleRow, &i, 0.05, 3e-8).unwrap();
+    assert!((steel.phi_ish - 0.88124).abs() < 1e-5 && (steel.phi_rs - 0.92683).abs() < 1e-5);
+    assert!(
+        (steel.rolling_n_m * 1e3 - 132.6).abs() < 0.05,
+        "{}",
+        steel.rolling_n_m * 1e3
+    );
+    assert!(
+        (steel.sliding_n_m * 1e3 - 76.4).abs() < 0.05,
+        "{}",
+        steel.sliding_n_m * 1e3
+    );
+    i.centrifugal_load = SkfCentrifugalLoad::CatalogueSi3n4Balls;
+    let hybrid = skf_moments(SkfSeries::AngularContactSingleRow, &i, 0.05, 3e-8).unwrap();
+    assert!(
+        (hybrid.rolling_n_m * 1e3 - 126.0).abs() < 0.05,
+        "{}",
+        hybrid.rolling_n_m * 1e3
+    );
+    assert!(
+        (hybrid.sliding_n_m * 1e3 - 60.8).abs() < 0.05,
+        "{}",
+        hybrid.sliding_n_m * 1e3
+    );
+    // The hybrid fit equals a given load of 0.41 times the steel fit.
+    let fg = 0.41 * 1.90e-12 * 60f64.powi(4) * 6000f64.powi(2);
+    i.centrifugal_load = SkfCentrifugalLoad::Given { load_n: fg };
+    let given = skf_moments(SkfSeries::AngularContactSingleRow, &i, 0.05, 3e-8).unwrap();
+    assert!((given.rolling_n_m - hybrid.rolling_n_m).abs() < 1e-12 * hybrid.rolling_n_m);
+    // At standstill the fit vanishes: steel and hybrid agree.
+    let mut s0 = dg_point(1000.0, 2000.0, 0.0, 15.0);
+    let a = skf_moments(SkfSeries::AngularContactSingleRow, &s0, 0.05, 3e-8).unwrap();
+    s0.centrifugal_load = SkfCentrifugalLoad::CatalogueSi3n4Balls;
+    let b = skf_moments(SkfSeries::AngularContactSingleRow, &s0, 0.05, 3e-8).unwrap();
+    assert_eq!(a, b);
+    // A negative given load names its field.
+    i.centrifugal_load = SkfCentrifugalLoad::Given { load_n: -1.0 };
+    match skf_moments(SkfSeries::AngularContactSingleRow, &i, 0.05, 3e-8) {
+        Err(Error::Config { field, .. }) => assert_eq!(field, "centrifugal_load_n"),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn ball_centrifugal_load_hybrid_ratio_and_size_against_the_fit() {
+    // The coupled models take Fg as the sum of the ball centrifugal forces.
+    // At the same cage speed, Si3N4 balls give the density ratio
+    // 3200/7830 = 0.409 of the steel load: within 1 % of the catalogue's
+    // hybrid factor 0.41 (p. 102).
+    let steel = Bearing::preset("7009C").unwrap();
+    let hybrid = Bearing::preset("7009C-hybrid").unwrap();
+    let n = 12_000.0;
+    let g = &steel.geometry;
+    // Cage speed of pure rolling at the free contact angle.
+    let gamma = g.ball_diameter_m * g.free_contact_angle_rad.cos() / g.pitch_diameter_m;
+    let cage = 0.5 * rpm_to_rad_s(n) * (1.0 - gamma);
+    let fg = |b: &Bearing| {
+        let mut p = point(&b.geometry, n, cage);
+        p.ball_mass_kg = b.ball_mass_kg();
+        centrifugal_load_n(&p).unwrap()
+    };
+    let (fs, fh) = (fg(&steel), fg(&hybrid));
+    let rho = hybrid.ball.density_kg_m3 / steel.ball.density_kg_m3;
+    assert!((fh / fs - rho).abs() < 1e-12, "{} vs {rho}", fh / fs);
+    assert!((fh / fs - SKF_HYBRID_CENTRIFUGAL_FACTOR).abs() < 0.01 * SKF_HYBRID_CENTRIFUGAL_FACTOR);
+    // Closed form for the steel balls: Z rho pi D^3/6 (dm/2) omega_c^2.
+    let m_ball = 7830.0 * std::f64::consts::PI * g.ball_diameter_m.powi(3) / 6.0;
+    let closed = 16.0 * m_ball * 0.5 * g.pitch_diameter_m * cage * cage;
+    assert!((fs - closed).abs() < 1e-9 * closed);
+    // The catalogue fit (table 2a, R3 of table 3, dm = 60 mm) is no force
+    // sum: for this bearing it is 9.3 times the sum (docs/concepts/physics.md §9).
+    let fit = 1.90e-12 * 60f64.powi(4) * n * n;
+    assert!((fit / fs - 9.3).abs() < 0.1, "{}", fit / fs);
 }
 
 #[test]
@@ -100,7 +292,7 @@ fn skf_total_agrees_with_the_catalogue_constant_friction_estimate() {
     // A 7208 B-size bearing (same d, D) at the same radial load: 120 N mm
     // from mu = 0.0020; the estimate is coarse, we ask for a factor 1.5.
     let a = skf_moments(
-        SkfSeries::AngularContact72B,
+        SkfSeries::AngularContactSingleRow,
         &dg_point(3000.0, 0.0, 3000.0, 20.0),
         0.05,
         6e-8,
@@ -211,7 +403,6 @@ fn lubrication_defaults_follow_the_tables() {
     }
     assert_eq!(HeatModel::from_name("SKF").unwrap(), HeatModel::Skf);
     assert!(HeatModel::from_name("harris").is_err());
-    assert_eq!(SkfSeries::from_name("72 b").unwrap(), SkfSeries::AngularContact72B);
     assert_eq!(skf_mu_ehl_for_lubricant("e-drive ATF"), 0.1);
     assert_eq!(skf_mu_ehl_for_lubricant("ISO VG 32"), 0.05);
 }

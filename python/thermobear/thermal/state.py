@@ -143,8 +143,11 @@ class ThermalState:
 #: and no ball drag) or "grease", "oil-air", "oil-mist", "jet", "oil-bath"
 #: (its defaults then fill ``lubrication_factor_f0`` and
 #: ``churning_oil_fraction`` when not given; :func:`lubrication_defaults`);
-#: SKF model: ``skf_series`` ("60", "62", "63", "64", "72B", "73B"; None: 62
-#: deep-groove, 72B angular-contact), ``sliding_friction_ehl`` (mu_EHL; None:
+#: SKF model: ``skf_series`` (SKF General Catalogue 6000, 2006, tables 3a
+#: and 3: deep-groove "60", "62", "63", "64" (also "630", "622", "623");
+#: "angular-single-row" for every single-row angular-contact series, also
+#: accepted as "72B" or "73B"; None: 62 deep-groove, angular-single-row
+#: angular-contact), ``sliding_friction_ehl`` (mu_EHL; None:
 #: 0.1 for a transmission fluid such as "e-drive ATF", else 0.05),
 #: ``replenishment_krs`` (None: from the lubrication method),
 #: ``seal_moment_nmm`` (N mm, 0 = open bearing).
