@@ -13,54 +13,17 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Optional, Sequence
 
-import numpy as np
-
 from .. import _native
-from ..bearing.ball_bearing import BearingSolution, _effects_arg
-from .state import HEAT_MODEL_OPTIONS, _check_bearing_call, _model_kwargs
+from ..bearing.ball_bearing import _effects_arg
+from .state import HEAT_MODEL_OPTIONS, _check_bearing_call, _HeatRows, _model_kwargs
 
 
 @dataclass(frozen=True)
-class IsothermalHeat:
-    """Heat of one bearing at one operating point and oil temperature; SI
+class IsothermalHeat(_HeatRows):
+    """Heat of one bearing at one operating point and oil temperature
+    (``heat``, ``total_heat_w``, ``churning_w``, ``viscosity_cst``,
+    ``oil_temperature_c``, ``solution``: the isothermal bearing state); SI
     inside ``raw``."""
-
-    raw: dict
-
-    @property
-    def heat(self) -> "polars.DataFrame":  # noqa: F821
-        """Heat by mechanism: ``source`` (Palmgren: load, viscous,
-        inner_spin, outer_spin, extra, churning; SKF: rolling, sliding,
-        seal, extra, churning), ``heat_w``."""
-        import polars as pl
-
-        return pl.DataFrame(
-            {"source": list(self.raw["source"]), "heat_w": np.asarray(self.raw["heat_w"])}
-        )
-
-    @property
-    def total_heat_w(self) -> float:
-        """Total heat [W]."""
-        return float(self.raw["total_heat_w"])
-
-    @property
-    def churning_w(self) -> float:
-        """Ball drag heat [W] (0 unless ``churning_oil_fraction`` > 0)."""
-        return float(self.raw["churning_w"])
-
-    @property
-    def viscosity_cst(self) -> float:
-        """Oil kinematic viscosity at ``oil_temperature_c`` [mm^2/s]."""
-        return float(self.raw["viscosity_cst"])
-
-    @property
-    def oil_temperature_c(self) -> float:
-        return float(self.raw["oil_temperature_c"])
-
-    @property
-    def solution(self) -> BearingSolution:
-        """The isothermal bearing state the heat was evaluated on."""
-        return BearingSolution(self.raw["solution"])
 
     def __repr__(self) -> str:
         return (
@@ -102,8 +65,9 @@ def isothermal_heat(
             _check_bearing_call(bearing, {k: heat[k]})
     _check_bearing_call(bearing, {})
     # the network's boundary temperatures are not used here: neutral 40 C
-    args = (lubricant, lubrication_factor_f0, spin_friction, 40.0, 40.0, "aluminium",
-            raceway_control, misalignment_rad, extra_heat_w, 1.0, churning_oil_fraction)  # fmt: skip
+    neutral = (40.0, 40.0, "aluminium")
+    args = (lubricant, lubrication_factor_f0, spin_friction, *neutral, raceway_control,
+            misalignment_rad, extra_heat_w, 1.0, churning_oil_fraction)  # fmt: skip
     options = _model_kwargs(*args, heat_model=heat_model, lubrication=lubrication, **heat)
     raw = _native.isothermal_heat(
         bearing._b,

@@ -35,10 +35,53 @@ THERMAL_EFFECTS = (
 
 
 @dataclass(frozen=True)
-class ThermalState:
-    """Coupled steady state of one bearing; SI inside ``raw``."""
+class _HeatRows:
+    """What every heat result shows (:class:`ThermalState`,
+    :class:`~thermobear.IsothermalHeat`); SI inside ``raw``."""
 
     raw: dict
+
+    @property
+    def heat(self) -> "polars.DataFrame":  # noqa: F821
+        """Heat by mechanism: ``source`` (Palmgren: load, viscous,
+        inner_spin, outer_spin, extra, churning; SKF: rolling, sliding,
+        seal, extra, churning), ``heat_w``."""
+        import polars as pl
+
+        return pl.DataFrame(
+            {"source": list(self.raw["source"]), "heat_w": np.asarray(self.raw["heat_w"])}
+        )
+
+    @property
+    def total_heat_w(self) -> float:
+        """Total heat [W]."""
+        return float(self.raw["total_heat_w"])
+
+    @property
+    def churning_w(self) -> float:
+        """Ball drag ("churning") heat in the oil-air mixture [W] (0 unless
+        ``churning_oil_fraction`` > 0)."""
+        return float(self.raw["churning_w"])
+
+    @property
+    def solution(self) -> BearingSolution:
+        """The bearing state the heat was evaluated on."""
+        return BearingSolution(self.raw["solution"])
+
+    @property
+    def oil_temperature_c(self) -> float:
+        """Temperature the oil's viscosity and density were taken at [C]."""
+        return float(self.raw["oil_temperature_c"])
+
+    @property
+    def viscosity_cst(self) -> float:
+        """Oil kinematic viscosity [mm^2/s]."""
+        return float(self.raw["viscosity_cst"])
+
+
+@dataclass(frozen=True)
+class ThermalState(_HeatRows):
+    """Coupled steady state of one bearing; SI inside ``raw``."""
 
     @property
     def temperatures(self) -> "polars.DataFrame":  # noqa: F821
@@ -58,16 +101,6 @@ class ThermalState:
         if node not in names:
             raise ConfigError(f"invalid node = {node!r}: known: {', '.join(names)}")
         return float(np.asarray(self.raw["temperature_c"])[names.index(node)])
-
-    @property
-    def heat(self) -> "polars.DataFrame":  # noqa: F821
-        """Heat by mechanism: ``source`` (load, viscous, inner_spin,
-        outer_spin, extra, churning), ``heat_w``."""
-        import polars as pl
-
-        return pl.DataFrame(
-            {"source": list(self.raw["source"]), "heat_w": np.asarray(self.raw["heat_w"])}
-        )
 
     @property
     def heat_split(self) -> "polars.DataFrame":  # noqa: F821
@@ -91,26 +124,12 @@ class ThermalState:
         )
 
     @property
-    def total_heat_w(self) -> float:
-        return float(self.raw["total_heat_w"])
-
-    @property
-    def churning_w(self) -> float:
-        """Ball drag ("churning") heat in the oil-air mixture [W] (0 unless
-        ``churning_oil_fraction`` > 0)."""
-        return float(self.raw["churning_w"])
-
-    @property
     def deformations(self) -> dict[str, float]:
         """Thermal offsets fed to the bearing (``radial_thermal_offset_um``,
         ``axial_thermal_offset_um``: A-38 with the ball growth projected on
         the free contact line), per-part growths, the centrifugal ring
         expansion and the ring displacements under load, all in um."""
         return {k: float(v) for k, v in self.raw["deformations"].items()}
-
-    @property
-    def solution(self) -> BearingSolution:
-        return BearingSolution(self.raw["solution"])
 
     @property
     def iterations(self) -> int:
@@ -120,14 +139,6 @@ class ThermalState:
     def residual(self) -> float:
         """Last largest node temperature change of the fixed point [K]."""
         return float(self.raw["residual_k"])
-
-    @property
-    def oil_temperature_c(self) -> float:
-        return float(self.raw["oil_temperature_c"])
-
-    @property
-    def viscosity_cst(self) -> float:
-        return float(self.raw["viscosity_cst"])
 
     def __repr__(self) -> str:
         t = dict(zip(self.raw["node"], np.asarray(self.raw["temperature_c"]), strict=False))
