@@ -15,7 +15,7 @@ from typing import Any, Optional, Sequence
 
 from .. import _native
 from ..bearing.ball_bearing import _effects_arg
-from .state import HEAT_MODEL_OPTIONS, _check_bearing_call, _HeatRows, _model_kwargs
+from .state import _check_bearing_call, _HeatRows, _model_kwargs
 
 
 @dataclass(frozen=True)
@@ -60,10 +60,7 @@ def isothermal_heat(
     ``extra_heat_w`` and the SKF keywords of :data:`HEAT_MODEL_OPTIONS`).
     A temperature outside the lubricant's data raises ``ConfigError``
     naming ``oil_temperature_c``."""
-    for k in heat:
-        if k not in HEAT_MODEL_OPTIONS:
-            _check_bearing_call(bearing, {k: heat[k]})
-    _check_bearing_call(bearing, {})
+    _check_bearing_call(bearing, {})  # unknown keywords: _model_kwargs names them
     # the network's boundary temperatures are not used here: neutral 40 C
     neutral = (40.0, 40.0, "aluminium")
     args = (lubricant, lubrication_factor_f0, spin_friction, *neutral, raceway_control,

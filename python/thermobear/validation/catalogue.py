@@ -37,6 +37,13 @@ _QUANTITIES = ("pair_axial_rigidity_n_per_um", "lift_off_force_n")
 QUANTITIES = ("pair_axial_rigidity_n_per_um", "pair_radial_rigidity_n_per_um", "lift_off_force_n")
 
 
+def inch_ball_mm(bore_mm: float, outer_diameter_mm: float) -> float:
+    """The presets' assumed ball of a catalogue bearing [mm]: the standard
+    inch ball (1/32 in steps) nearest 0.3 (OD - bore)."""
+    step = _INCH_MM / 32.0
+    return round(0.3 * (outer_diameter_mm - bore_mm) / step) * step
+
+
 def catalogue_bearing(row: dict, inner_conformity: float = 0.52) -> Bearing:
     """A catalogue bearing with the presets' assumed internal geometry:
     pitch diameter (bore + OD)/2, the standard inch ball (1/32 in steps)
@@ -44,8 +51,7 @@ def catalogue_bearing(row: dict, inner_conformity: float = 0.52) -> Bearing:
     ``ball_material`` (a material preset name, default bearing steel)."""
     bore, od = float(row["bore_mm"]), float(row["outer_diameter_mm"])
     dm = 0.5 * (bore + od)
-    step = _INCH_MM / 32.0
-    d = round(0.3 * (od - bore) / step) * step
+    d = inch_ball_mm(bore, od)
     return Bearing.angular_contact(
         ball_count=int(round(0.75 * np.pi * dm / d)),
         ball_diameter_mm=d,

@@ -26,9 +26,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..bearing import Bearing
+from .catalogue import inch_ball_mm
 from .result import SetResult
-
-_INCH_MM = 25.4
 
 
 def reference_heat_flow_w(bore_mm: float, outer_diameter_mm: float, width_mm: float) -> float:
@@ -46,8 +45,7 @@ def catalogue_deep_groove(row: dict) -> Bearing:
     f_o = 0.525, the middle of the normal clearance range."""
     d, big_d = float(row["bore_mm"]), float(row["outer_diameter_mm"])
     dm = 0.5 * (d + big_d)
-    step = _INCH_MM / 32.0
-    dw = round(0.3 * (big_d - d) / step) * step
+    dw = inch_ball_mm(d, big_d)
     lo, hi = row["normal_clearance_um"]
     return Bearing.deep_groove(
         ball_count=int(round(0.55 * math.pi * dm / dw)),
