@@ -31,14 +31,14 @@ fn solves(c: &mut Criterion) {
     c.bench_function("high_speed_solve_6208_16000rpm", |bch| {
         bch.iter(|| m.solve(black_box(&load_p), 16_000.0, &o).unwrap())
     });
-    let start = m.solve_static(&load_p, &o).unwrap().displacement_m_rad;
+    let start = m.solve_static(&load_p, &o).unwrap().displacement;
     c.bench_function("high_speed_solve_from_static_6208_16000rpm", |bch| {
         bch.iter(|| {
             m.solve_from(black_box(&load_p), 16_000.0, &o, start, &mut WarmStart::new())
                 .unwrap()
         })
     });
-    let q = m.solve(&load_p, 16_000.0, &o).unwrap().displacement_m_rad;
+    let q = m.solve(&load_p, 16_000.0, &o).unwrap().displacement;
     let mut warm = WarmStart::new();
     m.ring_forces(&q, 16_000.0, &o, &mut warm).unwrap();
     c.bench_function("ring_forces_warm_6208_16000rpm", |bch| {

@@ -1,4 +1,4 @@
-"""Benchmark of the discrepancy workflow (issue 6 target: a diagnosis over
+"""Benchmark of the discrepancy workflow (target: a diagnosis over
 10 candidates on 60 measured points under 10 s on 2 threads).
 
 60 points: 12 speeds x 5 quantities of a 7008C bearing at 300 N preload,
@@ -9,8 +9,8 @@ terms, the housing materials and sensor offsets).
 Reports the cold time (every model configuration solved) and the warm time
 (same conditions, new noise: the cached configurations are reused).
 
-Issue 12 targets, also measured here: a diagnosis with 12 candidates on
-100 points under 5 s (a hybrid 6208 at two radial loads, 10 speeds, 5
+The statistics and validation targets, also measured here: a diagnosis
+with 12 candidates on 100 points under 5 s (a hybrid 6208 at two radial loads, 10 speeds, 5
 quantities; a lubrication factor 30 % high and a +1.5 K thermocouple offset
 on the outer ring hidden together, so the two-parameter joint refit with
 its profile intervals runs too), and ``thermobear validate`` on every
@@ -36,10 +36,10 @@ def main() -> None:
     # baseline without spin friction: the switch joins the parameter candidates
     base_eff = [e for e in full if e != "spin_friction"]
     qs = [
-        "temperature_c:To",
-        "temperature_c:Ti",
-        "temperature_c:Tb",
-        "radial_stiffness_n_per_m",
+        "outer_ring_temperature_c",
+        "inner_ring_temperature_c",
+        "ball_temperature_c",
+        "radial_stiffness_seed_n_per_m",
         "heat_w",
     ]
     speeds = np.linspace(2000.0, 18000.0, 12)
@@ -99,14 +99,14 @@ def spindle() -> None:
 
 
 def twelve_on_hundred() -> None:
-    """12 candidates, 100 points, two effects hidden (issue 12 target)."""
+    """12 candidates, 100 points, two effects hidden (the statistics target)."""
     b = tb.Bearing.preset("6208-hybrid")
     qs = [
-        "temperature_c:To",
-        "temperature_c:Ti",
-        "temperature_c:Tb",
+        "outer_ring_temperature_c",
+        "inner_ring_temperature_c",
+        "ball_temperature_c",
         "heat_w",
-        "radial_stiffness_n_per_m",
+        "radial_stiffness_seed_n_per_m",
     ]
     speeds = np.linspace(2000.0, 12000.0, 10)
     cond = pl.concat(
@@ -122,7 +122,7 @@ def twelve_on_hundred() -> None:
     )
     spec = D.BearingModelSpec(b)
     truth = spec.with_setting(lubrication_factor_f0=1.3)
-    to = (cond["quantity"] == "temperature_c:To").to_numpy()
+    to = (cond["quantity"] == "outer_ring_temperature_c").to_numpy()
     names = [
         "lubrication_factor_f0",
         "extra_heat_w",
@@ -133,8 +133,8 @@ def twelve_on_hundred() -> None:
         "radial_load_scale",
         "radial_load_scale@1500",
         "radial_load_scale@3000",
-        "sensor_offset:temperature_c:To",
-        "sensor_gain:temperature_c:Ti",
+        "sensor_offset:outer_ring_temperature_c",
+        "sensor_gain:inner_ring_temperature_c",
         "heat_model:skf",
     ]
     for label, seed in (("cold", 0), ("warm", 1)):
@@ -144,13 +144,13 @@ def twelve_on_hundred() -> None:
         d = tb.diagnose(spec, meas, candidates=names)
         dt = time.perf_counter() - t0
         print(
-            f"issue 12 {label}: {len(names)} candidates, {meas.height} points: {dt:.2f} s "
+            f"target {label}: {len(names)} candidates, {meas.height} points: {dt:.2f} s "
             f"-> {d.verdict}"
         )
 
 
 def validate_all() -> None:
-    """``thermobear validate`` on every published set (issue 12 target)."""
+    """``thermobear validate`` on every published set (the validation target)."""
     import tempfile
     from pathlib import Path
 

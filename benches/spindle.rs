@@ -7,7 +7,7 @@ use std::hint::black_box;
 use thermobear::spindle::{Preload, Spindle, SEED_B_SPRING_RATE_N_PER_M};
 
 fn spindle() -> Spindle {
-    Spindle::seed_b("hybrid")
+    Spindle::preset("seed-ceramic-spindle")
         .unwrap()
         .with_preload(Preload::Spring {
             force_n: 300.0,
@@ -22,7 +22,7 @@ fn bench(c: &mut Criterion) {
         b.iter(|| black_box(sp.transient(12_000.0, 600.0, 5.0, 12, None, 0.05).unwrap()))
     });
     c.bench_function("spindle coupled steady state 12000 rpm", |b| {
-        b.iter(|| black_box(sp.steady_state(12_000.0).unwrap()))
+        b.iter(|| black_box(sp.thermal_state(12_000.0).unwrap()))
     });
 }
 

@@ -27,7 +27,7 @@ fn main() -> thermobear::Result<()> {
     let at = |i: usize| i as f64 / (n - 1).max(1) as f64;
     let points: Vec<OperatingPoint> = (0..n)
         .map(|i| OperatingPoint {
-            load_n_nm: [500.0 * at(i), 0.0, 500.0, 0.0, 0.0],
+            load: [500.0 * at(i), 0.0, 500.0, 0.0, 0.0],
             speed_rpm: 1000.0 + 19_000.0 * at(i),
             options: opts,
         })
@@ -36,7 +36,7 @@ fn main() -> thermobear::Result<()> {
     let t = Instant::now();
     let mut ok = 0;
     for p in &points {
-        ok += model.solve(&p.load_n_nm, p.speed_rpm, &p.options).is_ok() as usize;
+        ok += model.solve(&p.load, p.speed_rpm, &p.options).is_ok() as usize;
     }
     let single = t.elapsed().as_secs_f64() / n as f64;
     if std::env::args().nth(2).as_deref() == Some("single") {

@@ -23,9 +23,9 @@ fn main() -> thermobear::Result<()> {
         };
         println!(
             "{speed:7.0} rpm: dz {:7.2} um, kr {:6.1} N/um, ka {:6.1} N/um, max Qi {:7.1} N",
-            s.displacement_m_rad[2] * 1e6,
-            s.radial_stiffness_n_per_m / 1e6,
-            s.axial_stiffness_n_per_m / 1e6,
+            s.displacement[2] * 1e6,
+            s.radial_stiffness_seed_n_per_m / 1e6,
+            s.axial_stiffness_seed_n_per_m / 1e6,
             s.max_inner_load_n()
         );
     }

@@ -41,7 +41,13 @@ fn thermal_schedule(
     BearingSchedule::new(
         grid.iter()
             .zip(&states)
-            .map(|(&s, (b, _))| (s, n * b.radial_stiffness_n_per_m, n * b.axial_stiffness_n_per_m))
+            .map(|(&s, (b, _))| {
+                (
+                    s,
+                    n * b.radial_stiffness_seed_n_per_m,
+                    n * b.axial_stiffness_seed_n_per_m,
+                )
+            })
             .collect(),
     )
 }

@@ -141,7 +141,11 @@ pub struct OperatingConfig {
     /// Radial load Fx on the inner ring \[N\]; default 0.
     #[serde(default)]
     pub radial_n: f64,
-    /// Tilting moment My on the inner ring [N mm]; default 0.
+    /// Tilting moment My on the inner ring \[N m\]; default 0.
+    #[serde(default)]
+    pub moment_n_m: f64,
+    /// The same moment in N mm: the older key, read for one release
+    /// (`moment_n_m` is used when both are given).
     #[serde(default)]
     pub moment_nmm: f64,
 }

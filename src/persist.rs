@@ -144,7 +144,7 @@ mod tests {
 
     #[test]
     fn spindle_config_round_trips_and_rebuilds() {
-        let mut cfg = SpindleConfig::seed_b("hybrid").unwrap();
+        let mut cfg = SpindleConfig::preset("seed-ceramic-spindle").unwrap();
         cfg.preload = Preload::Rigid { force_n: 612.5 };
         let back: SpindleConfig = round("Spindle", &cfg);
         assert_eq!(back, cfg);

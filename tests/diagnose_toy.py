@@ -1,4 +1,4 @@
-"""A closed-form test rig for the statistics of :func:`thermobear.diagnose`
+"""A closed-form test rig for the statistics of ``thermobear.diagnose``
 (no solver: every prediction is a formula, so hundreds of seeds run in
 seconds and the truth is known exactly).
 
@@ -24,9 +24,9 @@ from thermobear.diagnosis import Candidate, ModelSpec, sensor_offset_candidates
 
 Q = {
     "heat_w": ("heat_w", 1.0, (0.0, 1e5), 0.02, True),
-    "temperature_c:Ti": ("ti", 1.0, (-60.0, 250.0), 0.5, False),
-    "temperature_c:To": ("to", 1.0, (-60.0, 250.0), 0.5, False),
-    "axial_stiffness_n_per_m": ("ka", 1.0, (1e5, 1e11), 0.02, True),
+    "inner_ring_temperature_c": ("ti", 1.0, (-60.0, 250.0), 0.5, False),
+    "outer_ring_temperature_c": ("to", 1.0, (-60.0, 250.0), 0.5, False),
+    "axial_stiffness_seed_n_per_m": ("ka", 1.0, (1e5, 1e11), 0.02, True),
 }
 
 
@@ -59,9 +59,9 @@ class Rig(ModelSpec):
         self._cache[self._key()] = True
         return {
             "heat_w": heat,
-            "temperature_c:Ti": amb + 0.25 * heat + 1.5 * n,
-            "temperature_c:To": amb + 0.15 * heat,
-            "axial_stiffness_n_per_m": ka,
+            "inner_ring_temperature_c": amb + 0.25 * heat + 1.5 * n,
+            "outer_ring_temperature_c": amb + 0.15 * heat,
+            "axial_stiffness_seed_n_per_m": ka,
         }
 
     def candidate_list(self, quantities=()):

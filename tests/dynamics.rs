@@ -558,7 +558,7 @@ fn heavy_torque_keeps_teeth_in_contact_light_torque_impacts() {
         .any(|c| c.input_torque_n_m == 10.0 && c.error_scale == 5.0 && c.impact != ImpactRegime::NoImpact));
 }
 
-// ------------------------------------------------ regime labels (issue 14) ----
+// ------------------------------------------------------------- regime labels ----
 
 use thermobear::dynamics::classify::{chaos_verdict, section_verdict, ChaosEvidence};
 use thermobear::dynamics::lyapunov::{largest_lyapunov_blocks, LyapunovBlocks};

@@ -4,8 +4,8 @@
 use thermobear::spindle::*;
 use thermobear::Error;
 
-fn spring_spindle(variant: &str, force_n: f64) -> Spindle {
-    Spindle::seed_b(variant)
+fn spring_spindle(name: &str, force_n: f64) -> Spindle {
+    Spindle::preset(name)
         .unwrap()
         .with_preload(Preload::Spring {
             force_n,
@@ -16,8 +16,8 @@ fn spring_spindle(variant: &str, force_n: f64) -> Spindle {
 
 #[test]
 fn steady_state_heat_balance() {
-    let sp = spring_spindle("hybrid", 300.0);
-    let s = sp.steady_state(12_000.0).unwrap();
+    let sp = spring_spindle("seed-ceramic-spindle", 300.0);
+    let s = sp.thermal_state(12_000.0).unwrap();
     // Sources = motor + all bearing heat; all of it leaves through the boundaries.
     let bearings: f64 = s.bearing_heat.iter().map(|h| h.heat.total_w()).sum();
     assert!((s.total_heat_w - s.motor_losses_w - bearings).abs() < 1e-9 * s.total_heat_w);
@@ -33,8 +33,8 @@ fn steady_state_heat_balance() {
 
 #[test]
 fn transient_settles_to_coupled_steady_state() {
-    let sp = spring_spindle("hybrid", 300.0);
-    let s = sp.steady_state(12_000.0).unwrap();
+    let sp = spring_spindle("seed-ceramic-spindle", 300.0);
+    let s = sp.thermal_state(12_000.0).unwrap();
     // Slowest time constant about 520 s: 8000 s is more than 15 of them.
     let run = sp.transient(12_000.0, 8000.0, 40.0, 50, None, 0.0).unwrap();
     let last = run.temperatures_c.last().unwrap();
@@ -49,8 +49,12 @@ fn transient_settles_to_coupled_steady_state() {
 
 #[test]
 fn ceramic_balls_expand_less_than_steel() {
-    let h = spring_spindle("hybrid", 300.0).steady_state(18_000.0).unwrap();
-    let s = spring_spindle("steel", 300.0).steady_state(18_000.0).unwrap();
+    let h = spring_spindle("seed-ceramic-spindle", 300.0)
+        .thermal_state(18_000.0)
+        .unwrap();
+    let s = spring_spindle("seed-steel-spindle", 300.0)
+        .thermal_state(18_000.0)
+        .unwrap();
     let a0 = 15f64.to_radians();
     let (dh, ds) = (
         h.front_radial_thermal_displacement_m(a0),
@@ -61,16 +65,20 @@ fn ceramic_balls_expand_less_than_steel() {
 
 #[test]
 fn temperatures_rise_with_speed_and_preload() {
-    let sp = spring_spindle("hybrid", 300.0);
+    let sp = spring_spindle("seed-ceramic-spindle", 300.0);
     let node = sp.network.front_balls;
     let mut last = f64::NEG_INFINITY;
     for n in [6_000.0, 12_000.0, 18_000.0] {
-        let t = sp.steady_state(n).unwrap().temperatures.temperatures_c[node];
+        let t = sp.thermal_state(n).unwrap().temperatures.temperatures_c[node];
         assert!(t > last, "{n}: {t} <= {last}");
         last = t;
     }
-    let low = spring_spindle("hybrid", 200.0).steady_state(12_000.0).unwrap();
-    let high = spring_spindle("hybrid", 500.0).steady_state(12_000.0).unwrap();
+    let low = spring_spindle("seed-ceramic-spindle", 200.0)
+        .thermal_state(12_000.0)
+        .unwrap();
+    let high = spring_spindle("seed-ceramic-spindle", 500.0)
+        .thermal_state(12_000.0)
+        .unwrap();
     assert!(high.temperatures.temperatures_c[node] > low.temperatures.temperatures_c[node]);
     let heat = |s: &SpindleState| s.bearing_heat.iter().map(|h| h.heat.total_w()).sum::<f64>();
     assert!(heat(&high) > heat(&low));
@@ -78,7 +86,7 @@ fn temperatures_rise_with_speed_and_preload() {
 
 #[test]
 fn compensation_preload_is_spring_rate_times_growth() {
-    let sp = Spindle::seed_b("hybrid").unwrap();
+    let sp = Spindle::preset("seed-ceramic-spindle").unwrap();
     let ks = SEED_B_SPRING_RATE_N_PER_M;
     let pts = compensation_preload(&sp, &[12_000.0], ks).unwrap();
     let p = pts[0];
@@ -92,7 +100,7 @@ fn spring_growth_raises_force_by_rate_times_growth_in_series_with_bearings() {
     // A spring of rate k_s compressed by u in series with the pair's own
     // axial compliance: dF = k_s u k_b / (k_b + k_s), k_b >> k_s, so dF is
     // just below k_s u (seed B's compensation preload takes dF = k_s u).
-    let sp = Spindle::seed_b("hybrid").unwrap();
+    let sp = Spindle::preset("seed-ceramic-spindle").unwrap();
     let ks = SEED_B_SPRING_RATE_N_PER_M;
     let pair = sp
         .front
@@ -116,8 +124,8 @@ fn spring_growth_raises_force_by_rate_times_growth_in_series_with_bearings() {
     // Bearings A and B in series along the axis (mean of both states).
     let kz = |s: &PairState| {
         let (a, b) = (
-            s.bearings[0].stiffness_matrix_si[2][2],
-            s.bearings[1].stiffness_matrix_si[2][2],
+            s.bearings[0].stiffness_matrix[2][2],
+            s.bearings[1].stiffness_matrix[2][2],
         );
         a * b / (a + b)
     };
@@ -130,21 +138,23 @@ fn spring_growth_raises_force_by_rate_times_growth_in_series_with_bearings() {
 fn rigid_steel_preload_runs_away_at_18000_rpm() {
     // Rigid (fixed-position) preload: the inner ring runs hotter than the
     // outer, the interference and with it the preload and heat grow.
-    let sp = Spindle::seed_b("steel")
+    let sp = Spindle::preset("seed-steel-spindle")
         .unwrap()
         .with_preload(Preload::Rigid { force_n: 300.0 })
         .unwrap();
-    match sp.steady_state(18_000.0) {
+    match sp.thermal_state(18_000.0) {
         Err(Error::ThermalRunaway(msg)) => assert!(msg.contains("preload grew"), "{msg}"),
         other => panic!("expected runaway, got {other:?}"),
     }
     // The same spindle with a spring preload settles.
-    assert!(spring_spindle("steel", 300.0).steady_state(18_000.0).is_ok());
+    assert!(spring_spindle("seed-steel-spindle", 300.0)
+        .thermal_state(18_000.0)
+        .is_ok());
 }
 
 #[test]
 fn grid_is_independent_of_thread_count() {
-    let sp = spring_spindle("hybrid", 300.0);
+    let sp = spring_spindle("seed-ceramic-spindle", 300.0);
     let run = |threads: usize| {
         rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
@@ -161,9 +171,9 @@ fn grid_is_independent_of_thread_count() {
 
 #[test]
 fn bad_input_is_rejected() {
-    let sp = spring_spindle("hybrid", 300.0);
-    assert!(matches!(sp.steady_state(-5.0), Err(Error::Config { .. })));
-    assert!(matches!(Spindle::seed_b("gold"), Err(Error::Config { .. })));
+    let sp = spring_spindle("seed-ceramic-spindle", 300.0);
+    assert!(matches!(sp.thermal_state(-5.0), Err(Error::Config { .. })));
+    assert!(matches!(Spindle::preset("gold"), Err(Error::Config { .. })));
     assert!(matches!(
         sp.with_preload(Preload::Spring {
             force_n: 300.0,
@@ -176,7 +186,9 @@ fn bad_input_is_rejected() {
 
 #[test]
 fn optimal_preload_trades_stiffness_against_heat() {
-    let sp = spring_spindle("hybrid", 300.0).with_radial_load(500.0).unwrap();
+    let sp = spring_spindle("seed-ceramic-spindle", 300.0)
+        .with_radial_load(500.0)
+        .unwrap();
     let best = optimal_preload(&sp, &[12_000.0], &[200.0, 400.0, 600.0]).unwrap();
     let b = &best[0];
     // More preload: stiffer pair (less mechanical displacement under the
@@ -201,11 +213,14 @@ fn optimal_preload_trades_stiffness_against_heat() {
 #[test]
 fn spin_friction_switch_removes_only_the_spin_heat() {
     use thermobear::effects::Effect;
-    let on = Spindle::seed_b("hybrid").unwrap();
+    let on = Spindle::preset("seed-ceramic-spindle").unwrap();
     let mut cfg = on.config.clone();
     cfg.effects = cfg.effects.without(Effect::SpinFriction);
     let off = Spindle::new(cfg).unwrap();
-    let (a, b) = (on.steady_state(15_000.0).unwrap(), off.steady_state(15_000.0).unwrap());
+    let (a, b) = (
+        on.thermal_state(15_000.0).unwrap(),
+        off.thermal_state(15_000.0).unwrap(),
+    );
     let spin = |s: &SpindleState| -> Vec<f64> {
         s.bearing_heat
             .iter()
@@ -241,18 +256,24 @@ fn with_ump(sp: &Spindle, on: bool) -> Spindle {
 /// Sum of the radial loads [Fx, Fy] the two bearings of a pair carry (both
 /// frames share x and y, pair.rs) [N].
 fn pair_radial_n(p: &PairState) -> [f64; 2] {
-    let (a, b) = (&p.bearings[0].applied_load_n_nm, &p.bearings[1].applied_load_n_nm);
+    let (a, b) = (&p.bearings[0].applied_load, &p.bearings[1].applied_load);
     [a[0] + b[0], a[1] + b[1]]
 }
 
 #[test]
 fn magnetic_pull_loads_the_pairs_in_static_equilibrium_and_heats_the_front_pair() {
     let nose_n = 200.0;
-    let base = Spindle::seed_b("hybrid").unwrap().with_radial_load(nose_n).unwrap();
+    let base = Spindle::preset("seed-ceramic-spindle")
+        .unwrap()
+        .with_radial_load(nose_n)
+        .unwrap();
     let (on, off) = (with_ump(&base, true), with_ump(&base, false));
     let f = on.magnetic_pull_n();
     assert!(f > 0.0 && off.magnetic_pull_n() == 0.0);
-    let (a, b) = (on.steady_state(12_000.0).unwrap(), off.steady_state(12_000.0).unwrap());
+    let (a, b) = (
+        on.thermal_state(12_000.0).unwrap(),
+        off.thermal_state(12_000.0).unwrap(),
+    );
     // Statics of the rigid shaft from the solved ball loads: the pairs carry
     // the pull (y) and the nose load (x) between them ...
     let (fr, rr) = (pair_radial_n(&a.front), pair_radial_n(&a.rear));
@@ -282,7 +303,7 @@ fn magnetic_pull_loads_the_pairs_in_static_equilibrium_and_heats_the_front_pair(
 fn magnetic_pull_agrees_with_the_rotor_model_and_vanishes_without_flux() {
     use thermobear::effects::Effect;
     use thermobear::rotor::spindle_vibration::{RowMaterial, SpindleVibration, SpindleVibrationConfig};
-    let sp = Spindle::seed_b("hybrid").unwrap();
+    let sp = Spindle::preset("seed-ceramic-spindle").unwrap();
     // Default: UMP off in both models.
     let mut vc = SpindleVibrationConfig::seed(RowMaterial::Hybrid);
     assert_eq!(sp.config.effects, vc.effects);
@@ -307,8 +328,8 @@ fn magnetic_pull_agrees_with_the_rotor_model_and_vanishes_without_flux() {
     let zero = Spindle::new(cfg).unwrap();
     assert_eq!(zero.magnetic_pull_n(), 0.0);
     let (a, b) = (
-        zero.steady_state(12_000.0).unwrap(),
-        with_ump(&sp, false).steady_state(12_000.0).unwrap(),
+        zero.thermal_state(12_000.0).unwrap(),
+        with_ump(&sp, false).thermal_state(12_000.0).unwrap(),
     );
     assert_eq!(a.temperatures.temperatures_c, b.temperatures.temperatures_c);
     assert_eq!(a.front, b.front);

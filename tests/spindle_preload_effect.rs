@@ -11,7 +11,7 @@ const SPEED_RPM: f64 = 15_000.0;
 const F0_N: f64 = 400.0;
 
 fn seed_b_with(effects: EffectSet, preload: Preload) -> Spindle {
-    let mut cfg = SpindleConfig::seed_b("hybrid").unwrap();
+    let mut cfg = SpindleConfig::preset("seed-ceramic-spindle").unwrap();
     cfg.effects = effects;
     cfg.preload = preload;
     Spindle::new(cfg).unwrap()
@@ -59,8 +59,8 @@ fn growth_reaches_the_spring_only_with_the_effect_on() {
     let ks = SEED_B_SPRING_RATE_N_PER_M;
     let sp_on = seed_b_with(base(), spring());
     let sp_off = seed_b_with(off(), spring());
-    let on = sp_on.steady_state(SPEED_RPM).unwrap();
-    let off = sp_off.steady_state(SPEED_RPM).unwrap();
+    let on = sp_on.thermal_state(SPEED_RPM).unwrap();
+    let off = sp_off.thermal_state(SPEED_RPM).unwrap();
     for s in [&on, &off] {
         // The growth is computed and reported either way.
         assert!(s.axial_growth_m > 10e-6, "{}", s.axial_growth_m);
@@ -121,8 +121,8 @@ fn rigid_preload_is_unaffected_by_the_effect() {
     // The rear set floats in the housing: the growth between the sets
     // loads nothing, so the switch changes no number.
     let rigid = Preload::Rigid { force_n: F0_N };
-    let on = seed_b_with(base(), rigid).steady_state(SPEED_RPM).unwrap();
-    let off = seed_b_with(off(), rigid).steady_state(SPEED_RPM).unwrap();
+    let on = seed_b_with(base(), rigid).thermal_state(SPEED_RPM).unwrap();
+    let off = seed_b_with(off(), rigid).thermal_state(SPEED_RPM).unwrap();
     assert!(on.axial_growth_m > 10e-6);
     assert_eq!(on.axial_growth_m, off.axial_growth_m);
     assert_eq!(on.temperatures.temperatures_c, off.temperatures.temperatures_c);

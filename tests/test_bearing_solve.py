@@ -53,8 +53,8 @@ def test_agrees_with_independent_scipy_implementation(b6208):
         np.testing.assert_allclose(
             balls["outer_contact_angle_deg"].to_numpy(), r["outer_contact_angle_deg"], atol=2e-3
         )
-        assert s.axial_displacement_mm == pytest.approx(r["dz_m"] * 1e3, rel=1e-4)
-        assert s.radial_displacement_mm == pytest.approx(abs(r["dx_m"]) * 1e3, rel=1e-3)
+        assert s.axial_displacement_um / 1000.0 == pytest.approx(r["dz_m"] * 1e3, rel=1e-4)
+        assert s.radial_displacement_um / 1000.0 == pytest.approx(abs(r["dx_m"]) * 1e3, rel=1e-3)
 
 
 def test_zero_speed_stiffness_is_symmetric(b6208):
@@ -87,22 +87,30 @@ def test_effects_off_gives_static_model(b6208):
     np.testing.assert_allclose(
         s_off.balls["inner_load_n"], s_static.balls["inner_load_n"], rtol=1e-7
     )
-    assert s_off.axial_displacement_mm == pytest.approx(s_static.axial_displacement_mm, rel=1e-8)
+    assert s_off.axial_displacement_um / 1000.0 == pytest.approx(
+        s_static.axial_displacement_um / 1000.0, rel=1e-8
+    )
 
 
 def test_thrust_only_matches_seed_free_angle_limit(b6208):
     # Displacements from the concentric position (ISO/TS 16281): a tiny thrust
     # needs about A sin(alpha0) = 0.6 mm x sin(14.835 deg) of axial travel.
     s = b6208.solve(axial_n=1e-3)
-    assert s.axial_displacement_mm == pytest.approx(0.6 * np.sin(np.radians(14.8351)), rel=1e-3)
+    assert s.axial_displacement_um / 1000.0 == pytest.approx(
+        0.6 * np.sin(np.radians(14.8351)), rel=1e-3
+    )
 
 
 def test_constant_mode_repeats_static(b6208):
     speeds = [6500.0, 11000.0, 16500.0]
     const = tb.stiffness_curve(b6208, speeds, **SEED_A, mode="constant")
     st = b6208.solve(**SEED_A)
-    np.testing.assert_allclose(const["axial_stiffness_n_per_m"], st.axial_stiffness_n_per_m)
-    np.testing.assert_allclose(const["radial_stiffness_n_per_m"], st.radial_stiffness_n_per_m)
+    np.testing.assert_allclose(
+        const["axial_stiffness_seed_n_per_m"], st.axial_stiffness_seed_n_per_m
+    )
+    np.testing.assert_allclose(
+        const["radial_stiffness_seed_n_per_m"], st.radial_stiffness_seed_n_per_m
+    )
     assert const["speed_rpm"].to_list() == speeds
 
 
@@ -122,7 +130,7 @@ _SCRIPT = """
 import json, numpy as np, thermobear as tb
 b = tb.Bearing.preset("6208")
 df = tb.stiffness_curve(b, np.linspace(6500, 16500, 64), 2680.9, 1189.9)
-r, a = df["radial_stiffness_n_per_m"], df["axial_stiffness_n_per_m"]
+r, a = df["radial_stiffness_seed_n_per_m"], df["axial_stiffness_seed_n_per_m"]
 print(json.dumps(r.to_list() + a.to_list()))
 """
 
@@ -146,7 +154,7 @@ def test_results_do_not_depend_on_thread_count():
         ({"axial_n": float("inf")}, "axial_n"),
         ({"effects": ["warp_drive"]}, "warp_drive"),
         ({"raceway_control": "cage"}, "raceway_control"),
-        ({"moment_nmm": 1000.0}, "moment_nmm"),
+        ({"moment_n_m": 1.0}, "moment_n_m"),
     ],
 )
 def test_bad_solve_input_names_field(b6208, kwargs, field):
@@ -157,7 +165,7 @@ def test_bad_solve_input_names_field(b6208, kwargs, field):
 
 
 def test_free_tilt_carries_a_moment(b6208):
-    s = b6208.solve(axial_n=2000.0, moment_nmm=20000.0, misalignment_rad=None)
+    s = b6208.solve(axial_n=2000.0, moment_n_m=20.0, misalignment_rad=None)
     assert s.tilt_rad > 0
     assert s.applied_load[4] == pytest.approx(20.0, rel=1e-6)  # N m about y
 

@@ -55,14 +55,14 @@ def test_churning_heat_is_the_ball_drag_closed_form_at_the_solved_cage_speed(bea
     s = states[FRACTION]
     p = _drag_by_hand(bearing, s, FRACTION)
     assert p > 1.0
-    assert s.churning_w == pytest.approx(p, rel=1e-9)
+    assert s.churning_heat_w == pytest.approx(p, rel=1e-9)
     heat = s.heat
     assert heat.filter(pl.col("source") == "churning")["heat_w"][0] == pytest.approx(p, rel=1e-9)
     # The heat leaves through the boundaries: the sources, churning included, balance.
     assert s.boundary_flows["heat_w"].sum() == pytest.approx(heat["heat_w"].sum(), rel=1e-6)
     assert s.total_heat_w == pytest.approx(heat["heat_w"].sum(), rel=1e-12)
     # Off by default.
-    assert states[0.0].churning_w == 0.0
+    assert states[0.0].churning_heat_w == 0.0
 
 
 def test_temperatures_rise_with_oil_in_the_cavity(states):
@@ -76,10 +76,10 @@ def test_curve_column_grows_like_speed_cubed_unlike_viscous_heat(bearing, states
     c = tb.thermal.thermal_stiffness_curve(
         bearing, [9000.0, SPEED_RPM], AXIAL_N, churning_oil_fraction=FRACTION
     ).sort("speed_rpm")
-    churn = c["churning_w"].to_numpy()
+    churn = c["churning_heat_w"].to_numpy()
     visc = c["viscous_heat_w"].to_numpy()
     # The curve's point is the single-point state (each speed is solved alone).
-    assert churn[1] == pytest.approx(states[FRACTION].churning_w, rel=1e-12)
+    assert churn[1] == pytest.approx(states[FRACTION].churning_heat_w, rel=1e-12)
     # Doubling the speed: drag ~ omega_c^3 -> about 8 (the cage speed ratio
     # is about 2; the slightly lower density of the hotter oil takes a little
     # off); Palmgren's omega Mv grows at most by 2^(5/3) = 3.17.
@@ -87,7 +87,7 @@ def test_curve_column_grows_like_speed_cubed_unlike_viscous_heat(bearing, states
     assert visc[1] / visc[0] < 2.0 ** (5.0 / 3.0)
     assert churn[1] / churn[0] > 2.0 * visc[1] / visc[0]
     base = tb.thermal.thermal_stiffness_curve(bearing, [9000.0], AXIAL_N)
-    assert base["churning_w"][0] == 0.0
+    assert base["churning_heat_w"][0] == 0.0
 
 
 @pytest.mark.parametrize("bad", [-0.01, 1.5, float("nan")])

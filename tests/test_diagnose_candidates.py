@@ -1,4 +1,5 @@
-"""The candidates of issue 12 item 3, each hidden in synthetic data and
+"""The diagnosis candidates (missing effects, miscalibrated inputs), each
+hidden in synthetic data and
 recovered by name: an applied-load (preload) scale -- global and per load
 level --, a sensor gain, the SKF-style heat model, on the spindle a preload
 scale and the shaft runout a non-contact vibration probe sees; the bounds
@@ -14,7 +15,7 @@ import thermobear as tb
 from thermobear import diagnosis as D
 
 SPEEDS = np.linspace(2000.0, 18000.0, 6)
-QS = ["temperature_c:To", "temperature_c:Ti", "axial_displacement_um"]
+QS = ["outer_ring_temperature_c", "inner_ring_temperature_c", "axial_displacement_um"]
 SEEDS = range(3)
 
 
@@ -44,7 +45,7 @@ def _measured(truth, cond, seed, sigma_k=0.3, gain=None):
     v = np.array([p[qq][i] for i, qq in enumerate(q)])
     if gain is not None:
         v[q == gain[0]] *= 1.0 + gain[1]
-    s = np.where(np.char.startswith(q.astype(str), "temp"), sigma_k, 0.2)
+    s = np.where(np.char.endswith(q.astype(str), "temperature_c"), sigma_k, 0.2)
     rng = np.random.default_rng(seed)
     return cond.with_columns(
         pl.Series("value", v + rng.normal(size=len(v)) * s), pl.Series("sigma", s)
@@ -61,8 +62,8 @@ def test_new_candidates_are_listed_with_roles_and_bounds(base):
     assert row["axial_load_scale"]["role"] == "calibration"
     assert (row["axial_load_scale"]["lower"], row["axial_load_scale"]["upper"]) == (0.7, 1.3)
     assert row["heat_model:skf"]["role"] == "effect"
-    assert row["sensor_gain:temperature_c:To"]["role"] == "measurement"
-    assert row["sensor_gain:temperature_c:To"]["upper"] == 0.02
+    assert row["sensor_gain:outer_ring_temperature_c"]["role"] == "measurement"
+    assert row["sensor_gain:outer_ring_temperature_c"]["upper"] == 0.02
     assert row["sensor_gain:axial_displacement_um"]["upper"] == 0.10
     # a jet-lubricated baseline: f0 and drag bounds of the method
     jet = D.BearingModelSpec(base.bearing, effects=list(base.effects), lubrication="jet")
@@ -90,7 +91,9 @@ def test_load_scale_moves_only_the_applied_load(base):
     direct = base.predict(cond.with_columns(pl.lit(360.0).alias("axial_n")))
     np.testing.assert_array_equal(scaled["axial_displacement_um"], direct["axial_displacement_um"])
     per_level = base.with_setting(**{"axial_load_scale@300": 1.2}).predict(cond)
-    np.testing.assert_array_equal(per_level["temperature_c:To"], direct["temperature_c:To"])
+    np.testing.assert_array_equal(
+        per_level["outer_ring_temperature_c"], direct["outer_ring_temperature_c"]
+    )
 
 
 def test_preload_20_percent_high_is_a_preload_scale_not_a_sensor_offset(base):
@@ -120,9 +123,10 @@ def test_hidden_sensor_gain_is_named_as_gain(base):
     cond = _cond()
     for seed in SEEDS:
         d = tb.diagnose(
-            base, _measured(base, cond, seed, sigma_k=0.05, gain=("temperature_c:Ti", 0.015))
+            base,
+            _measured(base, cond, seed, sigma_k=0.05, gain=("inner_ring_temperature_c", 0.015)),
         )
-        assert _named(d) == ["sensor_gain:temperature_c:Ti"], d.verdict
+        assert _named(d) == ["sensor_gain:inner_ring_temperature_c"], d.verdict
         assert d.accepted[0]["lower_95"] <= 0.015 <= d.accepted[0]["upper_95"]
 
 
@@ -175,22 +179,22 @@ def test_runout_reads_as_omega_times_epsilon(spindle_base):
 
 
 def test_hidden_runout_on_the_vibration_is_named_as_runout(spindle_base):
-    qs = ["temperature_c:front_outer", "temperature_c:rear_outer", "velocity_rms_mm_s",
+    qs = ["front_outer_ring_temperature_c", "rear_outer_ring_temperature_c", "velocity_rms_mm_s",
           "axial_growth_um"]  # fmt: skip
     truth = spindle_base.with_setting(runout_um=20.0)
     for seed in SEEDS:
-        d = tb.diagnose_spindle(spindle_base, _spindle_measured(truth, qs, seed))
+        d = tb.diagnose(spindle_base, _spindle_measured(truth, qs, seed))
         assert _named(d) == ["runout_um"], d.verdict
         assert d.accepted[0]["role"] == "measurement"
         assert d.accepted[0]["lower_95"] <= 20.0 <= d.accepted[0]["upper_95"]
 
 
 def test_spindle_preload_20_percent_high_is_named_preload_scale(spindle_base):
-    qs = ["temperature_c:front_inner", "temperature_c:rear_inner", "axial_growth_um",
+    qs = ["front_inner_ring_temperature_c", "rear_inner_ring_temperature_c", "axial_growth_um",
           "operating_preload_n"]  # fmt: skip
     truth = spindle_base.with_setting(preload_scale=1.2)
     for seed in SEEDS:
-        d = tb.diagnose_spindle(spindle_base, _spindle_measured(truth, qs, seed))
+        d = tb.diagnose(spindle_base, _spindle_measured(truth, qs, seed))
         assert _named(d) == ["preload_scale"], d.verdict
 
 
@@ -202,9 +206,9 @@ def test_hidden_unbalance_and_heat_model_on_the_spindle(spindle_base, setting, n
     # a G5 rotor against the G2.5 baseline grows like the unbalance response
     # (not like the omega x runout of the probe); the SKF-style heat model
     # against Palmgren shows in the temperatures and the axial growth
-    qs = ["temperature_c:front_outer", "temperature_c:rear_outer", "velocity_rms_mm_s",
+    qs = ["front_outer_ring_temperature_c", "rear_outer_ring_temperature_c", "velocity_rms_mm_s",
           "axial_growth_um"]  # fmt: skip
     truth = spindle_base.with_setting(**setting)
     for seed in SEEDS:
-        d = tb.diagnose_spindle(spindle_base, _spindle_measured(truth, qs, seed))
+        d = tb.diagnose(spindle_base, _spindle_measured(truth, qs, seed))
         assert _named(d) == [name], d.verdict

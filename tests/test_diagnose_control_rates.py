@@ -1,5 +1,5 @@
 """The generic control against the named candidates on the real bearing
-model (issue 12, item 3): "a heat source that no registry term models was
+model (the candidate list): "a heat source that no registry term models was
 named as churning, with a tight interval".
 
 Case: a 7008C angular-contact bearing at 400 N axial preload, 7 speeds
@@ -29,7 +29,12 @@ import thermobear as tb
 from thermobear import diagnosis as D
 
 SPEEDS = np.linspace(3000.0, 18000.0, 7)
-QUANTITIES = ["temperature_c:To", "temperature_c:Ti", "temperature_c:Tb", "heat_w"]
+QUANTITIES = [
+    "outer_ring_temperature_c",
+    "inner_ring_temperature_c",
+    "ball_temperature_c",
+    "heat_w",
+]
 _CACHE: dict = {}
 
 

@@ -1,5 +1,5 @@
 """Rates over fixed seeds for a load stated wrongly at one load level
-(issue 12, item 3: "applied load and preload miscalibration (per load
+(the candidate list: "applied load and preload miscalibration (per load
 level)"), and for other inputs hidden in turn (a global load scale, the
 housing conductance, a churning loss, a displacement-probe gain), on designs
 unlike the other rate tests: a steel 7009C under two axial loads (4 speeds,
@@ -45,7 +45,7 @@ DESIGNS = {
         _conditions(
             np.linspace(4000.0, 16000.0, 4),
             [(400.0, 0.0), (900.0, 0.0)],
-            ["temperature_c:To", "heat_w", "axial_displacement_um"],
+            ["outer_ring_temperature_c", "heat_w", "axial_displacement_um"],
         ),
         "axial_load_scale@900",
         1.08,
@@ -54,7 +54,7 @@ DESIGNS = {
         _conditions(
             np.linspace(1500.0, 12000.0, 8),
             [(0.0, 1500.0), (0.0, 3000.0)],
-            ["temperature_c:Ti", "radial_stiffness_n_per_m"],
+            ["inner_ring_temperature_c", "radial_stiffness_seed_n_per_m"],
         ),
         "radial_load_scale@3000",
         0.8,
@@ -143,7 +143,7 @@ def test_a_displacement_probe_gain_error_is_named_or_tied_and_covered():
     most outcomes are ties with the probe's offset; over 240 seeds about
     8 % name a wrong input instead (an ambient temperature offset, which
     moves the thermal part of the displacement, the housing conductance or
-    the axial load scale) -- the rate asserted is the issue's 90 %
+    the axial load scale) -- the rate asserted is the target's 90 %
     right-or-tie, which this case meets with little margin."""
     cond, _, _ = DESIGNS["7009C"]
     base = _base("7009C")

@@ -1,4 +1,4 @@
-"""The discrepancy workflow on the seed B spindle (issue 6):
+"""The discrepancy workflow on the seed B spindle:
 SpindleModelSpec against direct model calls, a hidden thermal displacement
 found from the baseline without it, the null case, seed B's measurements."""
 
@@ -19,8 +19,8 @@ from thermobear.studies.diagnose_seed_b import (
 
 SPEEDS = np.arange(6000.0, 18001.0, 2000.0)
 QS = [
-    "temperature_c:front_outer",
-    "temperature_c:rear_outer",
+    "front_outer_ring_temperature_c",
+    "rear_outer_ring_temperature_c",
     "velocity_rms_mm_s",
     "axial_growth_um",
 ]
@@ -77,8 +77,10 @@ def test_predictions_equal_direct_model_calls(spindle, base):
         p = spec.predict(cond)
         for i, n in enumerate(speeds):
             row = spindle.thermal_state(n, effects=list(spec.effects))
-            assert p["temperature_c:front_outer"][i] == row["front_outer_c"][0]
-            assert p["temperature_c:rear_outer"][i] == row["rear_outer_c"][0]
+            assert (
+                p["front_outer_ring_temperature_c"][i] == row["front_outer_ring_temperature_c"][0]
+            )
+            assert p["rear_outer_ring_temperature_c"][i] == row["rear_outer_ring_temperature_c"][0]
             assert p["axial_growth_um"][i] == row["axial_growth_um"][0]
         direct = tb.vibration(
             spindle.with_options(effects=list(spec.effects)),
@@ -103,7 +105,7 @@ def test_hidden_thermal_displacement_is_named_and_the_gap_shrinks(base):
     sig = _sigma(cond, truth)
     named = 0
     for seed in range(5):
-        d = tb.diagnose_spindle(base, _measured(cond, truth, sig, seed))
+        d = tb.diagnose(base, _measured(cond, truth, sig, seed))
         names = [a["name"] for a in d.accepted] + d.tie
         named += "thermal_displacement" in names or any(
             n in THERMAL_DISPLACEMENT_EFFECTS for n in names
@@ -118,7 +120,7 @@ def test_hidden_thermal_displacement_is_named_and_the_gap_shrinks(base):
     assert named == 5
     # re-diagnosing new noise on the same conditions costs no model run
     runs = base.model_runs
-    tb.diagnose_spindle(base, _measured(cond, truth, sig, 99))
+    tb.diagnose(base, _measured(cond, truth, sig, 99))
     assert base.model_runs == runs
 
 
@@ -127,7 +129,7 @@ def test_null_case_names_nothing(base):
     v = _values(base, cond)
     sig = _sigma(cond, v)
     verdicts = [
-        tb.diagnose_spindle(base, _measured(cond, v, sig, 100 + seed)).verdict for seed in range(10)
+        tb.diagnose(base, _measured(cond, v, sig, 100 + seed)).verdict for seed in range(10)
     ]
     # false discovery at most 1 in 10 (the acceptance rules aim at ~1 %)
     assert sum(v != "no missing effect supported" for v in verdicts) <= 1
@@ -137,24 +139,26 @@ def test_spec_carries_its_registry_and_bad_input_rejected(spindle, base):
     # the spindle's quantities and candidates come from the spec itself; the
     # bearing registry is untouched by a spindle diagnosis
     assert base.quantities is SPINDLE_QUANTITIES
-    assert "temperature_c:front_outer" not in diagnosis.QUANTITIES
+    assert "front_outer_ring_temperature_c" not in diagnosis.QUANTITIES
     a = tb.spindle_candidates(base, ["velocity_rms_mm_s"])
     assert a.equals(tb.candidates(base, ["velocity_rms_mm_s"]))
     assert "sensor_offset:velocity_rms_mm_s" in a["name"].to_list()
     assert set(a["role"]) == {"effect", "calibration", "measurement"}
     with pytest.raises(ConfigError, match="quantity"):
-        tb.candidates(base, ["temperature_c:To"])
+        tb.candidates(base, ["outer_ring_temperature_c"])
     with pytest.raises(ConfigError, match="effect"):
         tb.SpindleModelSpec(spindle, effects=["no_such_effect"])
     with pytest.raises(ConfigError, match="option"):
         tb.SpindleModelSpec(spindle, lubricant="ATF")
     with pytest.raises(ConfigError, match="spin_friction"):
-        tb.SpindleModelSpec(spindle, spin_friction=-0.1)
+        tb.SpindleModelSpec(spindle, spin_friction_coefficient=-0.1)
     with pytest.raises(ConfigError, match="model"):
         tb.diagnose_spindle(tb.BearingModelSpec(tb.Bearing.preset("7008C")), _conditions())
     with pytest.raises(ConfigError, match="radial_n"):
         base.predict(pl.DataFrame({"speed_rpm": [9000.0], "axial_n": [400.0], "radial_n": [50.0]}))
-    bad = _conditions().with_columns(pl.lit("temperature_c:To").alias("quantity"), value=30.0)
+    bad = _conditions().with_columns(
+        pl.lit("outer_ring_temperature_c").alias("quantity"), value=30.0
+    )
     with pytest.raises(DataError, match="quantity"):
         tb.load_spindle_measurements(bad)
 
@@ -163,10 +167,10 @@ def test_seed_b_table_matches_the_paper():
     m = tb.seed_b_measurements()
     got = {r["quantity"]: (r["speed_rpm"], r["value"]) for r in m.iter_rows(named=True)}
     # seed B, "Experimental results and analysis": Fig. 19a and Fig. 21
-    assert got["temperature_c:front_outer"] == (12000.0, 33.7)
-    assert got["temperature_c:rear_outer"] == (12000.0, 30.1)
+    assert got["front_outer_ring_temperature_c"] == (12000.0, 33.7)
+    assert got["rear_outer_ring_temperature_c"] == (12000.0, 30.1)
     assert got["velocity_rms_mm_s"] == (18000.0, 18.92)
-    assert (m["axial_n"] == 400.0).all()
+    assert (m["preload_n"] == 400.0).all()  # a spindle's preload keeps its name
 
 
 def test_seed_b_study_quick(tmp_path):
@@ -195,7 +199,7 @@ def test_without_axial_growth_thermal_displacement_is_only_a_look_alike(base):
     sig = _sigma(cond, truth)
     found = 0
     for seed in range(5):
-        d = tb.diagnose_spindle(base, _measured(cond, truth, sig, seed))
+        d = tb.diagnose(base, _measured(cond, truth, sig, seed))
         model_side = [a["name"] for a in d.accepted if a["side"] == "model"]
         assert all(
             n == "thermal_displacement" or n in THERMAL_DISPLACEMENT_EFFECTS for n in model_side
@@ -241,5 +245,5 @@ def test_cli_diagnoses_seed_b_measurements_from_a_spindle_preset(tmp_path, capsy
     )
     d = tb.diagnose(base, tb.seed_b_measurements(), holdout=None)
     assert d.verdict in text
-    assert main(args + ["--without", "no_such_effect"]) == 2
-    assert main(["diagnose", str(csv), "--spindle", "no-such-spindle"]) == 2
+    assert main(args + ["--without", "no_such_effect"]) == 1
+    assert main(["diagnose", str(csv), "--spindle", "no-such-spindle"]) == 1

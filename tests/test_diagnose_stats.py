@@ -1,4 +1,4 @@
-"""The statistics of :func:`thermobear.diagnose` (issue 12, items 2-7) on
+"""The statistics of ``thermobear.diagnose`` (calibration, model selection, hold-out, ties) on
 the closed-form rig of ``diagnose_toy``: cross-validation and information
 criteria, the generic control, the outlier audit, profile intervals, ties,
 joint calibration. Each statistic is checked against an independent
@@ -108,11 +108,11 @@ def test_generic_control_fits_a_smooth_unknown_term_exactly():
     d = _data(BASE)
     pred = _predict(BASE, _Setting(), d.cond, d.quantity)
     x = d.cond["speed_rpm"].to_numpy() / SPEEDS.max()
-    hot = d.quantity == "temperature_c:To"
+    hot = d.quantity == "outer_ring_temperature_c"
     term = np.where(hot, 3.0 * x + 2.0 * x**2, 0.0)
     exact = dataclasses.replace(d, y=pred + term)  # the term and no noise
     ctrl = generic_control(exact, pred)
-    assert ctrl.quantities == ("temperature_c:To",) and ctrl.n_parameters == 2
+    assert ctrl.quantities == ("outer_ring_temperature_c",) and ctrl.n_parameters == 2
     np.testing.assert_allclose(ctrl.shift, term, atol=1e-9)
     assert ctrl.chi2 == pytest.approx(0.0, abs=1e-12)
 
@@ -181,11 +181,11 @@ def test_loo_deviation_is_the_leave_one_out_line_residual():
 def test_a_16_sigma_outlier_is_reported_and_left_out():
     cond = conditions(SPEEDS)
     m = measured(BASE, cond, 5)
-    i = int(np.flatnonzero((cond["quantity"] == "temperature_c:Ti").to_numpy())[3])
+    i = int(np.flatnonzero((cond["quantity"] == "inner_ring_temperature_c").to_numpy())[3])
     m = m.with_columns(pl.Series("value", m["value"].to_numpy() + 16.0 * np.eye(m.height)[i] * 0.5))
     d = tb.diagnose(BASE, m, suggest=False)
     assert d.verdict.startswith("no missing effect supported; 1 outlier left out: ")
-    assert "temperature_c:Ti at 11200 rpm" in d.verdict
+    assert "inner_ring_temperature_c at 11200 rpm" in d.verdict
     assert d.outliers.height == 1 and d.outliers["robust_z"][0] > 5.0
     assert d.points["outlier"].sum() == 1 and d.points["outlier"][i]
 
@@ -254,7 +254,7 @@ def test_a_rival_at_its_bound_makes_no_tie():
 
 def test_each_tie_member_reports_its_value_interval_and_gap():
     # extra heat and an ambient offset move Ti alike (a constant shift)
-    cond = conditions(SPEEDS, quantities=("temperature_c:Ti",))
+    cond = conditions(SPEEDS, quantities=("inner_ring_temperature_c",))
     m = measured(BASE.with_setting(extra_heat_w=10.0), cond, 2)
     d = tb.diagnose(BASE, m, ["extra_heat_w", "ambient_temperature_offset_k"])
     assert set(d.tie) == {"extra_heat_w", "ambient_temperature_offset_k"}
@@ -290,7 +290,7 @@ def _two_rigs(seed, f0=1.3, offset_b=1.0):
     cond = conditions(SPEEDS[::2], loads=(300.0, 800.0))
     ma = measured(rig_a.with_setting(lubrication_factor_f0=f0), cond, seed)
     mb = measured(rig_b.with_setting(lubrication_factor_f0=f0), cond, 1000 + seed)
-    to = pl.col("quantity") == "temperature_c:To"
+    to = pl.col("quantity") == "outer_ring_temperature_c"
     mb = mb.with_columns(pl.when(to).then(pl.col("value") + offset_b).otherwise(pl.col("value")))
     return {"A": (rig_a, ma), "B": (rig_b, mb)}
 
@@ -298,14 +298,14 @@ def _two_rigs(seed, f0=1.3, offset_b=1.0):
 def test_joint_calibration_shared_and_per_set_parameters():
     c = tb.calibrate(
         _two_rigs(0),
-        ["lubrication_factor_f0", "sensor_offset:temperature_c:To"],
-        per_set=["sensor_offset:temperature_c:To"],
+        ["lubrication_factor_f0", "sensor_offset:outer_ring_temperature_c"],
+        per_set=["sensor_offset:outer_ring_temperature_c"],
     )
     p = c.parameters
     assert p.select("name", "set").rows() == [
         ("lubrication_factor_f0", "all"),
-        ("sensor_offset:temperature_c:To", "A"),
-        ("sensor_offset:temperature_c:To", "B"),
+        ("sensor_offset:outer_ring_temperature_c", "A"),
+        ("sensor_offset:outer_ring_temperature_c", "B"),
     ]
     truth = [1.3, 0.0, 1.0]
     assert all(lo <= t <= hi for lo, t, hi in zip(p["lower_95"], truth, p["upper_95"], strict=True))
@@ -323,7 +323,7 @@ def test_joint_calibration_coverage_over_seeds():
 
 def test_joint_calibration_says_what_the_data_do_not_identify():
     # on Ti alone, extra heat (0.25 K/W) and an ambient offset move it alike
-    cond = conditions(SPEEDS, quantities=("temperature_c:Ti",))
+    cond = conditions(SPEEDS, quantities=("inner_ring_temperature_c",))
     m = measured(BASE.with_setting(extra_heat_w=5.0), cond, 1)
     c = tb.calibrate([(BASE, m)], ["extra_heat_w", "ambient_temperature_offset_k"])
     assert set(c.not_identified) == {"extra_heat_w@0", "ambient_temperature_offset_k@0"} or set(
@@ -379,26 +379,26 @@ def test_in_diagnosis_joint_refit_gives_the_profile_intervals_of_calibrate():
     """Two effects accepted in one diagnosis (a lubrication factor 30 % high
     and a +1.5 K outer-ring thermocouple offset on a hybrid 6208) are
     re-calibrated together; their values and 95 % intervals are those of
-    :func:`thermobear.calibrate` on the same points (profile likelihood,
+    ``thermobear.calibrate`` on the same points (profile likelihood,
     the other parameter re-fitted at each trial value), and cover the truth."""
     from thermobear import diagnosis as D
 
-    qs = ["temperature_c:To", "temperature_c:Ti", "heat_w"]
+    qs = ["outer_ring_temperature_c", "inner_ring_temperature_c", "heat_w"]
     sp = np.linspace(2000.0, 12000.0, 6)
     cond = pl.DataFrame(
         {"speed_rpm": np.repeat(sp, len(qs)), "axial_n": 0.0, "radial_n": 2000.0,
          "quantity": qs * len(sp)}
     )  # fmt: skip
     spec = D.BearingModelSpec(tb.Bearing.preset("6208-hybrid"))
-    to = (cond["quantity"] == "temperature_c:To").to_numpy()
+    to = (cond["quantity"] == "outer_ring_temperature_c").to_numpy()
     meas = D.synthetic_measurements(spec.with_setting(lubrication_factor_f0=1.3), cond, 1.0, 3)
     meas = meas.with_columns(pl.col("value") + pl.Series(np.where(to, 1.5, 0.0)))
     d = tb.diagnose(spec, meas, holdout=None, suggest=False)
     names = [a["name"] for a in d.accepted]
-    assert sorted(names) == ["lubrication_factor_f0", "sensor_offset:temperature_c:To"]
+    assert sorted(names) == ["lubrication_factor_f0", "sensor_offset:outer_ring_temperature_c"]
     assert all(a["joint"] for a in d.accepted)
     c = tb.calibrate([(spec, meas)], names).parameters
-    truth = {"lubrication_factor_f0": 1.3, "sensor_offset:temperature_c:To": 1.5}
+    truth = {"lubrication_factor_f0": 1.3, "sensor_offset:outer_ring_temperature_c": 1.5}
     for a in d.accepted:
         row = c.filter(pl.col("name") == a["name"]).row(0, named=True)
         width = row["upper_95"] - row["lower_95"]

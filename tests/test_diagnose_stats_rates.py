@@ -1,4 +1,4 @@
-"""Rates of :func:`thermobear.diagnose` over fixed seeds (issue 12, Tests),
+"""Rates of ``thermobear.diagnose`` over fixed seeds (the statistics targets),
 on cases built unlike the other rate tests: 4-8 speeds, 2-4 quantities,
 one or two load levels and runs, effects scaled to 3 sigma at the top speed.
 
@@ -29,13 +29,14 @@ BASE = Rig(["centrifugal"])
 RICH = conditions(np.linspace(2000.0, 18000.0, 8), loads=(200.0, 900.0))
 #: (speeds, loads, quantities, runs): the null designs, in turn
 DESIGNS = [
-    (np.linspace(3000.0, 15000.0, 4), (500.0,), ("heat_w", "temperature_c:Ti"), ("1",)),
-    (np.linspace(2000.0, 18000.0, 8), (200.0, 900.0), ("heat_w", "axial_stiffness_n_per_m"),
+    (np.linspace(3000.0, 15000.0, 4), (500.0,), ("heat_w", "inner_ring_temperature_c"), ("1",)),
+    (np.linspace(2000.0, 18000.0, 8), (200.0, 900.0), ("heat_w", "axial_stiffness_seed_n_per_m"),
      ("1",)),
     (np.linspace(5000.0, 12000.0, 5), (400.0,),
-     ("temperature_c:To", "axial_stiffness_n_per_m", "heat_w"), ("a", "b")),
+     ("outer_ring_temperature_c", "axial_stiffness_seed_n_per_m", "heat_w"), ("a", "b")),
     (np.linspace(4000.0, 16000.0, 6), (300.0, 600.0),
-     ("heat_w", "temperature_c:Ti", "temperature_c:To", "axial_stiffness_n_per_m"), ("1",)),
+     ("heat_w", "inner_ring_temperature_c", "outer_ring_temperature_c",
+      "axial_stiffness_seed_n_per_m"), ("1",)),
 ]  # fmt: skip
 
 
@@ -78,10 +79,10 @@ def test_hidden_candidate_at_3_sigma_named_or_tied(name, option, null, step):
 
 def test_sensor_offsets_named_not_physics():
     """A thermocouple offset of 3 sigma on To, a 6 % heat-meter gain error."""
-    to = pl.col("quantity") == "temperature_c:To"
+    to = pl.col("quantity") == "outer_ring_temperature_c"
     heat = pl.col("quantity") == "heat_w"
     cases = [
-        ("sensor_offset:temperature_c:To", pl.when(to).then(pl.col("value") + 1.5)),
+        ("sensor_offset:outer_ring_temperature_c", pl.when(to).then(pl.col("value") + 1.5)),
         ("sensor_offset:heat_w", pl.when(heat).then(pl.col("value") * 1.06)),
     ]
     for name, change in cases:
@@ -152,10 +153,14 @@ def _real(preset, **options):
 
 def _real_conditions(preset) -> pl.DataFrame:
     if preset == "6208":  # deep-groove under radial load, 5 speeds, 3 quantities
-        qs = ["temperature_c:To", "temperature_c:Ti", "radial_stiffness_n_per_m"]
+        qs = [
+            "outer_ring_temperature_c",
+            "inner_ring_temperature_c",
+            "radial_stiffness_seed_n_per_m",
+        ]
         sp, loads = np.linspace(2000.0, 10000.0, 5), [(100.0, 2500.0)]
     else:  # hybrid angular-contact, two preloads, 6 speeds, 4 quantities
-        qs = ["temperature_c:To", "temperature_c:Tb", "heat_w", "axial_displacement_um"]
+        qs = ["outer_ring_temperature_c", "ball_temperature_c", "heat_w", "axial_displacement_um"]
         sp, loads = np.linspace(3000.0, 15000.0, 6), [(500.0, 0.0), (1000.0, 0.0)]
     rows = [(s, a, r, q) for a, r in loads for s in sp for q in qs]
     return pl.DataFrame(rows, schema=["speed_rpm", "axial_n", "radial_n", "quantity"], orient="row")
@@ -201,8 +206,8 @@ def test_real_model_thermocouple_offset_interval_covers():
     named, or tied with its look-alike (an ambient temperature offset
     moves To most), and its 95 % interval covers 2 K."""
     base, cond = _real("6208"), _real_conditions("6208")
-    to = pl.col("quantity") == "temperature_c:To"
-    name = "sensor_offset:temperature_c:To"
+    to = pl.col("quantity") == "outer_ring_temperature_c"
+    name = "sensor_offset:outer_ring_temperature_c"
 
     def offset(seed):
         m = D.synthetic_measurements(base, cond, 1.0, seed)

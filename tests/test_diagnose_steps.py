@@ -1,4 +1,4 @@
-"""Each step of :func:`thermobear.diagnose` on its own, on constructed
+"""Each step of ``thermobear.diagnose`` on its own, on constructed
 inputs: a toy model spec (closed-form predictions, no solver) whose
 ground truth is known, and hand-made residuals and screening rows."""
 
@@ -24,7 +24,7 @@ from thermobear.diagnosis.verdict import verdict_text
 #: The toy's quantities (registry layout of thermobear.diagnosis.QUANTITIES).
 Q = {
     "heat_w": ("heat_w", 1.0, (0.0, 1e5), 0.02, True),
-    "temperature_c:Ti": ("ti", 1.0, (-60.0, 250.0), 0.5, False),
+    "inner_ring_temperature_c": ("ti", 1.0, (-60.0, 250.0), 0.5, False),
 }
 
 
@@ -52,7 +52,7 @@ class Toy(ModelSpec):
         if "twin_drag" in self.effects:
             heat = heat + 30.0 * n**3
         self._cache[self._key()] = True
-        return {"heat_w": heat, "temperature_c:Ti": 30.0 + 0.2 * heat}
+        return {"heat_w": heat, "inner_ring_temperature_c": 30.0 + 0.2 * heat}
 
     def candidate_list(self, quantities=()):
         allq = tuple(Q)
@@ -78,7 +78,7 @@ def measured(truth: Toy, noise: float = 0.0, seed: int = 1) -> pl.DataFrame:
             "speed_rpm": np.repeat(SPEEDS, 2),
             "axial_n": 300.0,
             "radial_n": 0.0,
-            "quantity": ["heat_w", "temperature_c:Ti"] * len(SPEEDS),
+            "quantity": ["heat_w", "inner_ring_temperature_c"] * len(SPEEDS),
         }
     )
     df = tb.diagnosis.synthetic_measurements(truth, cond, noise=1.0, seed=seed)
@@ -115,6 +115,8 @@ def test_holdout_mask_by_run_and_its_errors():
         holdout_mask(df, "c")
     with pytest.raises(tb.ConfigError, match="fraction"):
         holdout_mask(df, 1.5)
+    with pytest.raises(tb.ConfigError, match="invalid holdout = True"):
+        holdout_mask(df, True)  # a bool is neither a fraction nor run labels
 
 
 # -- candidates -------------------------------------------------------------------------
@@ -151,7 +153,7 @@ def test_audit_flags_the_large_residual_block():
     df = pl.DataFrame(
         {
             "speed_rpm": np.tile(np.linspace(1_000.0, 9_000.0, 9), 2),
-            "quantity": ["heat_w"] * 9 + ["temperature_c:Ti"] * 9,
+            "quantity": ["heat_w"] * 9 + ["inner_ring_temperature_c"] * 9,
         }
     )
     r = np.zeros(18)
@@ -162,7 +164,7 @@ def test_audit_flags_the_large_residual_block():
     assert big.select("quantity", "speed_band").rows() == [("heat_w", "6333-9000 rpm")]
     assert big["rms_residual_sigma"][0] == pytest.approx(12.0)
     shapes = dict(table.select("quantity", "shape").unique().rows())
-    assert shapes["temperature_c:Ti"] == "none" and shapes["heat_w"] != "none"
+    assert shapes["inner_ring_temperature_c"] == "none" and shapes["heat_w"] != "none"
 
 
 def test_gap_table_reports_before_and_after_on_the_masked_rows():

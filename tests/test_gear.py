@@ -23,7 +23,7 @@ SEED = dict(
     density_t_per_mm3=7.8e-9,
     mass_kg=(1.201, 3.1),
     polar_inertia_t_mm2=(0.1152, 1.6),
-    input_torque_nm=100.0,
+    input_torque_n_m=100.0,
 )
 
 
@@ -68,8 +68,8 @@ def test_linear_limit_eigenfrequencies_match_numpy(seed_system: tb.GearSystem) -
     df = pl.DataFrame(
         {
             "speed_rpm": [0.0],
-            "radial_stiffness_n_per_m": [5e13],
-            "axial_stiffness_n_per_m": [5e13],
+            "radial_stiffness_seed_n_per_m": [5e13],
+            "axial_stiffness_seed_n_per_m": [5e13],
         }
     )
     rigid = tb.GearSystem(seed_system.gear, stiffness=df, bearing_stiffness_per="bearing")
@@ -109,12 +109,12 @@ def test_bearing_support_is_two_bearings_in_parallel(pair: tb.GearPair) -> None:
     sched = sys.stiffness_schedule
     np.testing.assert_allclose(
         sched["support_radial_stiffness_n_per_m"].to_numpy(),
-        2 * one["radial_stiffness_n_per_m"].to_numpy(),
+        2 * one["radial_stiffness_seed_n_per_m"].to_numpy(),
         rtol=1e-6,
     )
     np.testing.assert_allclose(
         sched["support_axial_stiffness_n_per_m"].to_numpy(),
-        2 * one["axial_stiffness_n_per_m"].to_numpy(),
+        2 * one["axial_stiffness_seed_n_per_m"].to_numpy(),
         rtol=1e-6,
     )
     via_frame = tb.GearSystem(pair, stiffness=one, bearing_stiffness_per="bearing")
@@ -179,7 +179,11 @@ def test_bad_input_raises_config_error(pair: tb.GearPair, seed_system: tb.GearSy
     with pytest.raises(tb.ConfigError, match="steps_per_period"):
         tb.bifurcation(seed_system, [10_000.0], "up", 10, 4, steps_per_period=8)
     bad = pl.DataFrame(
-        {"speed_rpm": [0.0], "radial_stiffness_n_per_m": [-1e8], "axial_stiffness_n_per_m": [1e8]}
+        {
+            "speed_rpm": [0.0],
+            "radial_stiffness_seed_n_per_m": [-1e8],
+            "axial_stiffness_seed_n_per_m": [1e8],
+        }
     )
     with pytest.raises(tb.ConfigError, match="kr_n_per_m"):
         tb.GearSystem(pair, stiffness=bad, bearing_stiffness_per="bearing")
@@ -197,7 +201,7 @@ def test_bad_input_raises_config_error(pair: tb.GearPair, seed_system: tb.GearSy
 
 def test_seed_torque_is_period_one_without_impacts(seed_system: tb.GearSystem) -> None:
     """Seed A's 100 N m: static mesh deflection F/k_m ~ 4.9 um exceeds the
-    dynamic swing, so the teeth never separate (issue 4's expectation)."""
+    dynamic swing, so the teeth never separate (the expected regime)."""
     speeds = np.linspace(6500.0, 16500.0, 11)
     pts = tb.bifurcation(seed_system, speeds, "up", 300, 20, 64)
     per = pts.unique(subset=["speed_rpm"])
@@ -220,7 +224,7 @@ def test_chaos_at_light_torque_and_large_error(pair: tb.GearPair) -> None:
     """20 N m with a 10 um TE: the teeth hit both flanks and the motion is
     chaotic near 14,000 rpm (positive Lyapunov exponent by two methods: the
     sweep's per-period estimate and a separate run from the static state)."""
-    light = tb.GearSystem(pair, stiffness="constant", torque_nm=20.0, te_amplitude_um=10.0)
+    light = tb.GearSystem(pair, stiffness="constant", torque_n_m=20.0, te_amplitude_um=10.0)
     speeds = [13_500.0, 14_000.0, 14_500.0]
     pts = tb.bifurcation(light, speeds, "independent", 300, 100, 64)
     per = pts.unique(subset=["speed_rpm"], maintain_order=True)
@@ -233,7 +237,7 @@ def test_chaos_at_light_torque_and_large_error(pair: tb.GearPair) -> None:
 
 
 def test_independent_sweep_is_deterministic(pair: tb.GearPair) -> None:
-    light = tb.GearSystem(pair, torque_nm=20.0, te_amplitude_um=10.0)
+    light = tb.GearSystem(pair, torque_n_m=20.0, te_amplitude_um=10.0)
     speeds = np.linspace(9000.0, 15000.0, 9)
     a = tb.bifurcation(light, speeds, "independent", 100, 30, 64)
     b = tb.bifurcation(light, speeds, "independent", 100, 30, 64)
@@ -295,14 +299,14 @@ def test_regime_map_and_set_columns(seed_system: tb.GearSystem, pair: tb.GearPai
         transient_periods=300, record_periods=20,
     )  # fmt: skip
     assert rm.height == 8
-    for c in ("torque_nm", "te_scale", "speed_rpm", "regime", "period", "impact"):
+    for c in ("torque_n_m", "te_scale", "speed_rpm", "regime", "period", "impact"):
         assert c in rm.columns
-    heavy = rm.filter((pl.col("torque_nm") == 100.0) & (pl.col("te_scale") == 1.0))
+    heavy = rm.filter((pl.col("torque_n_m") == 100.0) & (pl.col("te_scale") == 1.0))
     assert set(heavy["impact"]) == {"no-impact"}
-    light = rm.filter((pl.col("torque_nm") == 10.0) & (pl.col("te_scale") == 5.0))
+    light = rm.filter((pl.col("torque_n_m") == 10.0) & (pl.col("te_scale") == 5.0))
     assert (light["impact"] != "no-impact").any()
     # The set runner gives what single sweeps give (lanes are independent).
-    sys2 = tb.GearSystem(pair, torque_nm=20.0, te_amplitude_um=10.0)
+    sys2 = tb.GearSystem(pair, torque_n_m=20.0, te_amplitude_um=10.0)
     speeds = [9000.0, 10000.0, 11000.0]
     both = tb.bifurcation_set({"a": seed_system, "b": sys2}, speeds, ("up", "down"), 50, 10, 64)
     one = tb.bifurcation(sys2, speeds, "down", 50, 10, 64)
@@ -326,7 +330,7 @@ def test_quick_demo_study_writes_its_tables(tmp_path) -> None:
         assert f"{stem}.parquet" in names and f"{stem}.csv" in names
     assert sum(n.startswith("bifurcation_seed_100nm_") for n in names) >= 4
     reg = pl.read_parquet(tmp_path / "regimes.parquet")
-    seed = reg.filter(pl.col("torque_nm") == 100.0)
+    seed = reg.filter(pl.col("torque_n_m") == 100.0)
     # The seed operating point: period-1 without impacts everywhere.
     assert set(seed["regime"]) == {"period-1"} and set(seed["impact"]) == {"no-impact"}
     d = pl.read_parquet(tmp_path / "gear_defaults.parquet")

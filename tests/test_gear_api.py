@@ -1,4 +1,4 @@
-"""Gear dynamics inputs and settings from Python (issue 14, items 1-3):
+"""Gear dynamics inputs and settings from Python:
 mesh tables round trips, coast mirror symmetry, bearing stiffness per
 bearing or per shaft, backlash by name, classifier settings, Lyapunov units,
 speeds in any order."""
@@ -33,7 +33,7 @@ def seed(pair: tb.GearPair) -> tb.GearSystem:
 def light(pair: tb.GearPair) -> tb.GearSystem:
     """20 N m with a 10 um TE: both flanks hit, periodic, quasi-periodic
     and chaotic speeds between 9,000 and 16,000 rpm."""
-    return tb.GearSystem(pair, torque_nm=20.0, te_amplitude_um=10.0)
+    return tb.GearSystem(pair, torque_n_m=20.0, te_amplitude_um=10.0)
 
 
 def _sweep(system: tb.GearSystem, speeds=SPEEDS, direction: str = "up", **kw) -> pl.DataFrame:
@@ -56,7 +56,7 @@ def test_builtin_tables_round_trip_bit_for_bit(
     tab = light.mesh_tables()
     np.testing.assert_array_equal(tab["mesh_phase"].to_numpy(), np.arange(64) / 64)
     again = tb.GearSystem(
-        pair, torque_nm=20.0, mesh_stiffness_n_per_m=tab, transmission_error_um=tab
+        pair, torque_n_m=20.0, mesh_stiffness_n_per_m=tab, transmission_error_um=tab
     )
     assert again.mesh_model == "table" and light.mesh_model == "potential-energy"
     assert again.mesh_tables().equals(tab)
@@ -162,11 +162,11 @@ def test_bad_tables_raise_config_error(pair: tb.GearPair) -> None:
 
 def test_table_system_pickles(pair: tb.GearPair) -> None:
     sys = tb.GearSystem(
-        pair, torque_nm=-30.0, transmission_error_um=lambda ph: 3.0 * np.cos(4 * np.pi * ph)
+        pair, torque_n_m=-30.0, transmission_error_um=lambda ph: 3.0 * np.cos(4 * np.pi * ph)
     )
     back = pickle.loads(pickle.dumps(sys))
     assert back.mesh_tables().equals(sys.mesh_tables())
-    assert back.params == sys.params and back.params["torque_nm"] == -30.0
+    assert back.params == sys.params and back.params["torque_n_m"] == -30.0
 
 
 # ---------------------------------------------------------------- coast ----
@@ -179,7 +179,7 @@ def test_coast_mirrors_drive(pair: tb.GearPair, light: tb.GearSystem) -> None:
     extremes) and the same regimes and contact regimes."""
     tab = light.mesh_tables()
     neg = tab.with_columns(-pl.col("transmission_error_um"), -pl.col("transmission_error_m"))
-    coast = tb.GearSystem(pair, torque_nm=-20.0, transmission_error_um=neg)
+    coast = tb.GearSystem(pair, torque_n_m=-20.0, transmission_error_um=neg)
     assert coast.bearing_loads_n == light.bearing_loads_n
     np.testing.assert_array_equal(coast.static_state_m(9600.0), -light.static_state_m(9600.0))
     d, c = _sweep(light), _sweep(coast)
@@ -197,7 +197,7 @@ def test_coast_at_seed_torque_sits_on_the_back_flank(
     pair: tb.GearPair, seed: tb.GearSystem
 ) -> None:
     """-100 N m with the same TE: no impacts, the mean DTE is -(b + F_n/k_m)."""
-    coast = tb.GearSystem(pair, torque_nm=-100.0)
+    coast = tb.GearSystem(pair, torque_n_m=-100.0)
     per = _per_speed(_sweep(coast, [8000.0, 12000.0]))
     assert set(per["impact"]) == {"no-impact"} and set(per["regime"]) == {"period-1"}
     p = coast.params
@@ -223,7 +223,7 @@ def _frame(kr: float, ka: float, prefix: str = "") -> pl.DataFrame:
 
 
 def test_per_shaft_equals_twice_per_bearing(pair: tb.GearPair) -> None:
-    kw = dict(torque_nm=20.0, te_amplitude_um=10.0)
+    kw = dict(torque_n_m=20.0, te_amplitude_um=10.0)
     one = _frame(1.5e8, 4e7)
     per_bearing = tb.GearSystem(pair, stiffness=one, bearing_stiffness_per="bearing", **kw)
     per_shaft = tb.GearSystem(pair, stiffness=_frame(3e8, 8e7), bearing_stiffness_per="shaft", **kw)
@@ -258,7 +258,7 @@ def test_per_shaft_equals_twice_per_bearing(pair: tb.GearPair) -> None:
 
 
 def test_half_and_total_backlash_are_one_input(pair: tb.GearPair) -> None:
-    kw = dict(torque_nm=20.0, te_amplitude_um=10.0)
+    kw = dict(torque_n_m=20.0, te_amplitude_um=10.0)
     half = tb.GearSystem(pair, half_backlash_um=40.0, **kw)
     total = tb.GearSystem(pair, backlash_total_um=80.0, **kw)
     assert half.params["half_backlash_um"] == pytest.approx(40.0, rel=1e-15)

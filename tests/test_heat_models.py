@@ -39,7 +39,7 @@ def test_lubrication_defaults_per_method():
 def test_method_sets_f0_and_drag_unless_given(b7009):
     # lubrication=None is the seeds' model: f0 = 1, no drag
     s0 = tb.thermal_state(b7009, 12_000, 400.0, 0.0)
-    assert s0.churning_w == 0.0
+    assert s0.churning_heat_w == 0.0
     explicit = tb.thermal_state(
         b7009, 12_000, 400.0, 0.0, lubrication_factor_f0=6.6, churning_oil_fraction=0.03
     )
@@ -47,7 +47,7 @@ def test_method_sets_f0_and_drag_unless_given(b7009):
     assert jet.total_heat_w == pytest.approx(explicit.total_heat_w, rel=1e-12)
     # a value given beats the method's default
     dry = tb.thermal_state(b7009, 12_000, 400.0, 0.0, lubrication="jet", churning_oil_fraction=0.0)
-    assert dry.churning_w == 0.0 and jet.churning_w > 10.0
+    assert dry.churning_heat_w == 0.0 and jet.churning_heat_w > 10.0
 
 
 def test_skf_model_state_balances_heat_and_reports_its_terms(b7009):
@@ -63,7 +63,7 @@ def test_skf_model_state_balances_heat_and_reports_its_terms(b7009):
     # a seal moment adds omega M_seal at the same state
     sealed = tb.thermal_state(
         b7009, 15_000, 400.0, 100.0, heat_model="skf", lubrication="oil-air",
-        lubricant="ISO VG 32", seal_moment_nmm=20.0,
+        lubricant="ISO VG 32", seal_moment_n_m=0.02,
     )  # fmt: skip
     hs = dict(zip(sealed.heat["source"], sealed.heat["heat_w"], strict=True))
     assert hs["seal"] == pytest.approx(0.020 * 15_000 * 2 * np.pi / 60, rel=1e-12)
@@ -95,8 +95,8 @@ def test_drag_vanishes_with_the_oil_fraction_and_grows_with_speed(b7009):
         b7009, speeds, 400.0, 0.0, churning_oil_fraction=0.0, **kw
     )
     wet = tb.thermal.thermal_stiffness_curve(b7009, speeds, 400.0, 0.0, **kw)
-    assert np.all(dry["churning_w"].to_numpy() == 0.0)
-    assert np.all(np.diff(wet["churning_w"].to_numpy()) > 0.0)
+    assert np.all(dry["churning_heat_w"].to_numpy() == 0.0)
+    assert np.all(np.diff(wet["churning_heat_w"].to_numpy()) > 0.0)
     # exactly cubic in the solved cage speed, linear in the oil density
     a, b = (tb.thermal_state(b7009, n, 400.0, 0.0, **kw).raw for n in (12000.0, 18000.0))
     ratio = (b["cage_speed_rad_s"] / a["cage_speed_rad_s"]) ** 3 * (

@@ -22,7 +22,17 @@ PACKAGE = Path(__file__).resolve().parents[1] / "python" / "thermobear"
 #: Bottom layer first. A module may import from its own layer or a lower
 #: one; a module's layer is that of the longest prefix of its name listed.
 LAYERS: list[tuple[str, ...]] = [
-    ("thermobear._native", "thermobear.errors", "thermobear._optional", "thermobear.config"),
+    (
+        "thermobear._native",
+        "thermobear.errors",
+        "thermobear._optional",
+        "thermobear._limits",
+        "thermobear._types",
+        "thermobear._deprecation",
+        "thermobear._names",
+        "thermobear.glossary",
+        "thermobear.config",
+    ),
     ("thermobear.bearing",),
     ("thermobear.thermal",),
     ("thermobear.gear", "thermobear.spindle", "thermobear.rotor"),

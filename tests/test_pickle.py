@@ -1,4 +1,4 @@
-"""Everything pickles (issue 13, item 1): the native classes through a
+"""Everything pickles: the native classes through a
 versioned serde envelope, the Python wrappers, the diagnosis model specs and
 the result objects. Round trips are exact: the copy gives bit-identical
 results."""
@@ -161,7 +161,7 @@ def test_gear_pair_and_gear_system_with_settings_bit_identical():
         mesh_damping_ratio=0.05,
         bearing_damping_ratio=0.03,
         te_amplitude_um=3.5,
-        torque_nm=120.0,
+        torque_n_m=120.0,
     )
     s2 = _rt(system)
     assert isinstance(s2, tb.GearSystem)
@@ -184,7 +184,7 @@ def test_bearing_model_spec_and_diagnosis_round_trip():
             "speed_rpm": np.repeat([4_000.0, 8_000.0, 12_000.0, 16_000.0], 2),
             "axial_n": 300.0,
             "radial_n": 0.0,
-            "quantity": ["temperature_c:To", "radial_stiffness_n_per_m"] * 4,
+            "quantity": ["outer_ring_temperature_c", "radial_stiffness_seed_n_per_m"] * 4,
         }
     )
     before = spec.predict(cond)  # fills the cache: the pickle leaves it behind
@@ -196,7 +196,7 @@ def test_bearing_model_spec_and_diagnosis_round_trip():
     p = truth.predict(cond)
     meas = cond.with_columns(
         pl.Series("value", [p[q][i] for i, q in enumerate(cond["quantity"])]),
-        pl.Series("sigma", [0.3, 0.01 * p["radial_stiffness_n_per_m"][1]] * 4),
+        pl.Series("sigma", [0.3, 0.01 * p["radial_stiffness_seed_n_per_m"][1]] * 4),
     )
     d = tb.diagnose(spec, meas)
     assert isinstance(d, tb.Diagnosis)
@@ -209,7 +209,7 @@ def test_spindle_model_spec_round_trip():
     spec = tb.SpindleModelSpec(
         tb.Spindle.preset("seed-steel-spindle").with_options(preload_n=500.0),
         effects=["thermal_displacement"],
-        spin_friction=0.05,
+        spin_friction_coefficient=0.05,
     )
     spec2 = _rt(spec)
     assert isinstance(spec2, tb.SpindleModelSpec)

@@ -49,7 +49,7 @@ def test_rigid_preload_ignores_the_effect():
     off = sp.with_options(effects=[n for n in names if n != EFFECT]).thermal_state(SPEED_RPM)
     assert on["axial_growth_um"][0] > 10.0
     assert on["operating_preload_n"][0] == off["operating_preload_n"][0]
-    assert on["front_balls_c"][0] == off["front_balls_c"][0]
+    assert on["front_ball_temperature_c"][0] == off["front_ball_temperature_c"][0]
 
 
 def test_registry_lists_models():

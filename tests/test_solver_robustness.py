@@ -41,16 +41,16 @@ def test_all_but_one_effect_solves_over_speed(b7008c, dropped, axial_n):
     df = thermal_stiffness_curve(b7008c, SPEEDS_RPM, axial_n, 0.0, effects=_all_but(dropped))
     assert df.height == SPEEDS_RPM.size
     for col in (
-        "axial_stiffness_n_per_m",
-        "radial_stiffness_n_per_m",
+        "axial_stiffness_seed_n_per_m",
+        "radial_stiffness_seed_n_per_m",
         "heat_w",
         "ball_temperature_c",
     ):
         v = df[col].to_numpy()
         assert np.all(np.isfinite(v)), col
     # A preloaded bearing resists axial and radial displacement.
-    assert np.all(df["axial_stiffness_n_per_m"].to_numpy() > 0.0)
-    assert np.all(df["radial_stiffness_n_per_m"].to_numpy() > 0.0)
+    assert np.all(df["axial_stiffness_seed_n_per_m"].to_numpy() > 0.0)
+    assert np.all(df["radial_stiffness_seed_n_per_m"].to_numpy() > 0.0)
     # Friction heat is positive and leaves through the cooler boundaries:
     # the balls run above the ambient air.
     assert np.all(df["heat_w"].to_numpy() > 0.0)

@@ -41,7 +41,12 @@ def test_thermal_state_heat_balance_and_dispatch(ceramic: tb.Spindle) -> None:
         row["motor_losses_w"] + row["bearing_heat_w"], rel=1e-9
     )
     # Seed B's ordering: balls hotter than inner ring hotter than outer ring.
-    assert row["front_balls_c"] > row["front_inner_c"] > row["front_outer_c"] > 25.0
+    assert (
+        row["front_ball_temperature_c"]
+        > row["front_inner_ring_temperature_c"]
+        > row["front_outer_ring_temperature_c"]
+        > 25.0
+    )
     assert all(
         c.endswith(("_c", "_n", "_w", "_um", "_deg", "_rpm", "_m", "_k", "_n_per_m"))
         or c in ("preload_kind", "iterations")
@@ -50,10 +55,13 @@ def test_thermal_state_heat_balance_and_dispatch(ceramic: tb.Spindle) -> None:
 
 
 def test_temperatures_rise_with_speed_and_preload(ceramic: tb.Spindle) -> None:
-    t = [tb.thermal_state(ceramic, speed_rpm=n)["front_balls_c"][0] for n in (6_000.0, 18_000.0)]
+    t = [
+        tb.thermal_state(ceramic, speed_rpm=n)["front_ball_temperature_c"][0]
+        for n in (6_000.0, 18_000.0)
+    ]
     assert t[1] > t[0]
     p = [
-        tb.thermal_state(ceramic, speed_rpm=12_000.0, preload_n=f)["front_balls_c"][0]
+        tb.thermal_state(ceramic, speed_rpm=12_000.0, preload_n=f)["front_ball_temperature_c"][0]
         for f in (250.0, 500.0)
     ]
     assert p[1] > p[0]
@@ -63,20 +71,26 @@ def test_ceramic_balls_less_thermal_displacement() -> None:
     kw = dict(preload_kind="spring", spring_rate_n_per_um=0.36)
     c = tb.Spindle.preset("seed-ceramic-spindle").with_options(**kw)
     s = tb.Spindle.preset("seed-steel-spindle").with_options(**kw)
-    dc = tb.thermal_state(c, speed_rpm=18_000.0)["radial_thermal_displacement_um"][0]
-    ds = tb.thermal_state(s, speed_rpm=18_000.0)["radial_thermal_displacement_um"][0]
+    dc = tb.thermal_state(c, speed_rpm=18_000.0)["thermal_radial_displacement_um"][0]
+    ds = tb.thermal_state(s, speed_rpm=18_000.0)["thermal_radial_displacement_um"][0]
     assert 0.0 < dc < ds
 
 
 def test_transient_approaches_steady(ceramic: tb.Spindle) -> None:
     steady = tb.thermal_state(ceramic, speed_rpm=12_000.0)
     df = tb.transient(ceramic, speed_rpm=12_000.0, duration_s=8_000.0, dt_s=40.0, record_every=10)
-    assert df.columns[0] == "time_s" and all(c.endswith("_c") for c in df.columns[1:])
+    assert df.columns[0] == "time_s" and all(c.endswith("_temperature_c") for c in df.columns[1:])
     assert df["time_s"][-1] == pytest.approx(8_000.0)
-    for node in ("front_balls_c", "front_inner_c", "rotor_c"):
+    for node in (
+        "front_ball_temperature_c",
+        "front_inner_ring_temperature_c",
+        "rotor_temperature_c",
+    ):
         assert df[node][-1] == pytest.approx(steady[node][0], abs=0.05)
     # Starts at ambient (25 C) and warms up.
-    assert df["rotor_c"][0] == pytest.approx(25.0) and df["rotor_c"][-1] > 30.0
+    assert (
+        df["rotor_temperature_c"][0] == pytest.approx(25.0) and df["rotor_temperature_c"][-1] > 30.0
+    )
 
 
 def test_compensation_preload_is_rate_times_growth(ceramic: tb.Spindle) -> None:

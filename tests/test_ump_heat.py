@@ -55,10 +55,11 @@ def test_pull_is_in_static_equilibrium_on_the_shaft(spindle: tb.Spindle, rows) -
 
 def test_pull_heats_the_front_pair(spindle: tb.Spindle, rows) -> None:
     on, off = rows
-    rise_k = on["front_outer_c"] - off["front_outer_c"]
+    rise_k = on["front_outer_ring_temperature_c"] - off["front_outer_ring_temperature_c"]
     print(
         f"\nUMP {on['magnetic_pull_n']:.1f} N at {SPEED_RPM:.0f} rpm: front outer ring "
-        f"{off['front_outer_c']:.3f} -> {on['front_outer_c']:.3f} C ({rise_k:+.4f} K), "
+        f"{off['front_outer_ring_temperature_c']:.3f} -> "
+        f"{on['front_outer_ring_temperature_c']:.3f} C ({rise_k:+.4f} K), "
         f"front bearing heat {off['front_bearing_heat_w']:.3f} -> "
         f"{on['front_bearing_heat_w']:.3f} W"
     )
@@ -66,7 +67,7 @@ def test_pull_heats_the_front_pair(spindle: tb.Spindle, rows) -> None:
     assert on["front_bearing_heat_w"] > off["front_bearing_heat_w"]
     assert on["bearing_heat_w"] > off["bearing_heat_w"]
     assert rise_k > 0.0
-    assert on["front_balls_c"] > off["front_balls_c"]
+    assert on["front_ball_temperature_c"] > off["front_ball_temperature_c"]
     # The larger contact loads: the most loaded ball presses harder.
     assert on["inner_load_max_n"] > off["inner_load_max_n"]
     # Still a steady state: all heat leaves through the boundaries.
@@ -77,4 +78,4 @@ def test_pull_is_off_by_default_as_in_the_rotor_model(spindle: tb.Spindle, rows)
     _, off = rows
     default = spindle.thermal_state(SPEED_RPM).row(0, named=True)
     assert default["magnetic_pull_n"] == 0.0
-    assert default["front_outer_c"] == off["front_outer_c"]
+    assert default["front_outer_ring_temperature_c"] == off["front_outer_ring_temperature_c"]

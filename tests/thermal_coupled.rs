@@ -57,14 +57,14 @@ fn growth_that_closes_the_clearance_stiffens_the_bearing() {
     .unwrap();
     assert_eq!(iso.raceway_offsets.radial_m, 0.0);
     assert!(hot.raceway_offsets.radial_m > 0.0);
-    assert!(hot.bearing.radial_stiffness_n_per_m > iso.bearing.radial_stiffness_n_per_m);
+    assert!(hot.bearing.radial_stiffness_seed_n_per_m > iso.bearing.radial_stiffness_seed_n_per_m);
     assert!(hot.bearing.max_inner_load_n() > iso.bearing.max_inner_load_n());
     // A hot housing alone (tight fit) opens the clearance instead.
     let housing = coupled(only(&[Effect::ThermalExpansionHousing]))
         .solve(10_000.0, FA, FR)
         .unwrap();
     assert!(housing.raceway_offsets.radial_m < 0.0);
-    assert!(housing.bearing.radial_stiffness_n_per_m < iso.bearing.radial_stiffness_n_per_m);
+    assert!(housing.bearing.radial_stiffness_seed_n_per_m < iso.bearing.radial_stiffness_seed_n_per_m);
 }
 
 #[test]

@@ -26,7 +26,7 @@ fn hybrid_7009c_light_preload_solves_where_it_used_to_fail() {
         let h = s.heat.heat.total_w();
         assert!((out - h).abs() < 1e-6 * h, "f0 {f0} at {n} rpm: {out} vs {h}");
         // The ring is in equilibrium with the applied 400 N axial load.
-        assert_eq!(s.bearing.applied_load_n_nm[2], 400.0);
+        assert_eq!(s.bearing.applied_load[2], 400.0);
         assert!(s.bearing.residual <= c.options().solve.tolerance);
         // More viscous heat -> a hotter bearing than f0 = 1.
         let cold = CoupledBearing::seed_a(&b, CoupledOptions::default())

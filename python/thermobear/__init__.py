@@ -20,6 +20,8 @@ or below; ``tests/test_layout.py`` checks it):
   (published data sets, ``thermobear validate``), ``cli`` on top.
 """
 
+from typing import TYPE_CHECKING as _TYPE_CHECKING
+
 from . import (
     _native,
     bearing,
@@ -54,8 +56,10 @@ from .errors import (
     ConfigError,
     ConvergenceError,
     DataError,
+    Interrupted,
     ThermalRunawayError,
     ThermobearError,
+    ThreadsWarning,
 )
 from .gear import (
     GearPair,
@@ -67,6 +71,7 @@ from .gear import (
     regime_map,
     regimes,
 )
+from .glossary import glossary
 from .rotor import campbell, critical_speeds, spectrum, spectrum_orders, vibration
 from .spindle import (
     Spindle,
@@ -87,12 +92,17 @@ from .thermal import (
 )
 from .validation import validate
 
+if _TYPE_CHECKING:  # for annotations only; polars loads with the first result
+    import polars
+
+    from ._types import EffectKind
+
 __version__: str = _native.__version__
 
 
-def effects(kind: str | None = None) -> "polars.DataFrame":  # noqa: F821
+def effects(kind: "EffectKind | None" = None) -> "polars.DataFrame":
     """The effects registry: every physical effect a model can include or
-    leave out, one row each (see :func:`thermobear.diagnosis.effect_registry`
+    leave out, one row each (see ``thermobear.diagnosis.effect_registry``
     for the columns). ``kind="switch"``: the named effects for
     ``effects=[...]``; ``kind="term"``: the terms with a calibratable input
     whose null value leaves them out (extra heat, housing conductance ...);
@@ -118,8 +128,10 @@ __all__ = [
     "ConfigError",
     "ConvergenceError",
     "DataError",
+    "Interrupted",
     "ThermalRunawayError",
     "ThermobearError",
+    "ThreadsWarning",
     # system descriptions
     "load_config",
     "seed_config",
@@ -175,4 +187,6 @@ __all__ = [
     "load_study",
     # validation against published data
     "validate",
+    # the one name of each quantity
+    "glossary",
 ]

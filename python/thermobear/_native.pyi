@@ -3,7 +3,7 @@
 SI inside; every argument name carries its unit. Arrays are float64 numpy.
 """
 
-from typing import Any, Callable, Optional, Sequence
+from typing import Any, Callable, Optional, Sequence, final
 
 import numpy as np
 import numpy.typing as npt
@@ -21,11 +21,21 @@ class ConvergenceError(ThermobearError): ...
 class ThermalRunawayError(ConvergenceError): ...
 class DataError(ThermobearError): ...
 
+class Interrupted(ThermobearError):
+    done: int
+    total: int
+
+class ThreadsWarning(RuntimeWarning): ...
+
+def available_cores() -> int:
+    """The number of cores a ``threads`` argument is capped to."""
+
+@final  # a native class: Python cannot subclass it
 class Material:
     def __reduce__(self) -> tuple[Callable[[dict[str, Any]], Any], tuple[dict[str, Any]]]:
         """Pickle support: ``(_restore, ({format, version, kind, data},))``."""
-    def __init__(
-        self,
+    def __new__(
+        cls,
         name: str,
         youngs_modulus_gpa: float,
         poisson_ratio: float,
@@ -33,7 +43,7 @@ class Material:
         thermal_expansion_per_k: float,
         conductivity_w_mk: float,
         specific_heat_j_kgk: float,
-    ) -> None: ...
+    ) -> Material: ...
     @staticmethod
     def preset(name: str) -> Material: ...
     @staticmethod
@@ -53,6 +63,7 @@ class Material:
     @property
     def specific_heat_j_kgk(self) -> float: ...
 
+@final  # a native class: Python cannot subclass it
 class Bearing:
     def __reduce__(self) -> tuple[Callable[[dict[str, Any]], Any], tuple[dict[str, Any]]]:
         """Pickle support: ``(_restore, ({format, version, kind, data},))``."""
@@ -110,11 +121,11 @@ class Bearing:
         self,
         axial_n: float,
         radial_n: float,
-        moment_nmm: float,
+        moment_n_m: float,
         speed_rpm: float,
         effects: Optional[Sequence[str]] = None,
         raceway_control: str = "outer",
-        misalignment_rad: Optional[float] = 0.0,
+        misalignment_rad: Optional[float] = ...,  # 0.0
     ) -> dict: ...
     def ring_forces(
         self,
@@ -131,10 +142,10 @@ def stiffness_curve(
     speeds_rpm: npt.NDArray[np.float64],
     axial_n: float,
     radial_n: float,
-    moment_nmm: float,
+    moment_n_m: float,
     effects: Optional[Sequence[str]] = None,
     raceway_control: str = "outer",
-    misalignment_rad: Optional[float] = 0.0,
+    misalignment_rad: Optional[float] = ...,  # 0.0
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
 
@@ -144,19 +155,33 @@ def solve_many(
     bearing: Bearing,
     axial_n: npt.NDArray[np.float64],
     radial_n: npt.NDArray[np.float64],
-    moment_nmm: npt.NDArray[np.float64],
+    moment_n_m: npt.NDArray[np.float64],
     speed_rpm: npt.NDArray[np.float64],
     effects: Optional[Sequence[str]] = None,
     raceway_control: str = "outer",
-    misalignment_rad: Optional[float] = 0.0,
+    misalignment_rad: Optional[float] = ...,  # 0.0
     threads: Optional[int] = None,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, Any]:
     """Output arrays (NaN/0 where a point failed), ``ok`` (bool array),
     ``error_kind`` and ``error`` (lists of str or None)."""
 
+# ---- the core's default solver options (src/python/defaults.rs) ----
+def default_solve_options() -> dict[str, Any]:
+    """``SolveOptions::default()`` of the Rust core (tilt held level)."""
+
+def solve_with_default_options(
+    bearing: Bearing,
+    axial_n: float,
+    radial_n: float,
+    moment_n_m: float,
+    speed_rpm: float,
+) -> dict[str, Any]:
+    """One point solved with the core's default options untouched."""
+
 # ---- helical gear pair dynamics (src/python/gear.rs) ----
 
+@final  # a native class: Python cannot subclass it
 class GearPair:
     def __reduce__(self) -> tuple[Callable[[dict[str, Any]], Any], tuple[dict[str, Any]]]:
         """Pickle support: ``(_restore, ({format, version, kind, data},))``."""
@@ -178,7 +203,7 @@ class GearPair:
         mass_kg: tuple[float, float],
         polar_inertia_t_mm2: tuple[float, float],
         input_torque_nm: float,
-        profile_shift_coeff: tuple[float, float] = (0.0, 0.0),
+        profile_shift_coeff: tuple[float, float] = ...,  # (0.0, 0.0)
         addendum_coeff: float = 1.0,
         dedendum_coeff: float = 1.25,
     ) -> GearPair: ...
@@ -190,11 +215,12 @@ class GearPair:
     ) -> dict[str, npt.NDArray[np.float64]]: ...
     def mesh_frequency_hz(self, speed_rpm: float) -> float: ...
 
+@final  # a native class: Python cannot subclass it
 class GearSystem:
     def __reduce__(self) -> tuple[Callable[[dict[str, Any]], Any], tuple[dict[str, Any]]]:
         """Pickle support: ``(_restore, ({format, version, kind, data},))``."""
-    def __init__(
-        self,
+    def __new__(
+        cls,
         gear: GearPair,
         speeds_rpm: Sequence[float],
         radial_stiffness_n_per_m: Sequence[float],
@@ -210,7 +236,7 @@ class GearSystem:
         mesh_model: Optional[str] = None,
         mesh_stiffness_n_per_m: Optional[Sequence[float]] = None,
         transmission_error_m: Optional[Sequence[float]] = None,
-    ) -> None:
+    ) -> GearSystem:
         """Support stiffness per shaft against speed; optional uniform mesh
         tables over one mesh period (phases i / n): normal mesh stiffness
         [N/m] instead of ``mesh_model``, TE [m] instead of
@@ -349,6 +375,7 @@ def rotor_spectrum(
 ) -> dict[str, Any]: ...
 def rotor_default_effects() -> list[str]: ...
 
+@final  # a native class: Python cannot subclass it
 class Spindle:
     def __reduce__(self) -> tuple[Callable[[dict[str, Any]], Any], tuple[dict[str, Any]]]:
         """Pickle support: ``(_restore, ({format, version, kind, data},))``."""
@@ -412,7 +439,7 @@ class Spindle:
 # ambient_temperature_c, housing_material, raceway_control,
 # misalignment_rad, extra_heat_w, housing_conductance_scale,
 # churning_oil_fraction, heat_model, lubrication, skf_series,
-# sliding_friction_ehl, replenishment_krs, seal_moment_nmm), as
+# sliding_friction_ehl, replenishment_krs, seal_moment_n_m), as
 # ``thermobear.thermal.state._model_kwargs`` builds it.
 def thermal_state(
     bearing: Bearing,
@@ -431,7 +458,7 @@ def isothermal_heat(
     effects: Optional[Sequence[str]],
     settings: dict[str, Any],
 ) -> dict[str, Any]:
-    """Heat rows of :func:`thermal_state` (no nodes, boundaries or
+    """Heat rows of [`thermal_state`][thermobear.thermal_state] (no nodes, boundaries or
     deformations) with the oil held at ``oil_temperature_c``, on the
     isothermal bearing state (``solution``)."""
 
@@ -454,7 +481,7 @@ def thermal_state_many(
     threads: Optional[int] = None,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, Any]:
-    """Columns of :func:`solve_many` plus temperatures, heat and thermal
+    """Columns of ``solve_many`` plus temperatures, heat and thermal
     offsets per point; ``ok``, ``error_kind``, ``error``."""
 
 def lubrication_defaults(lubrication: str, bearing_type: str) -> dict[str, Any]: ...
@@ -462,7 +489,7 @@ def skf_sliding_friction_ehl(lubricant: str) -> float: ...
 def seed_a_network_links(
     bearing: Bearing,
     speed_rpm: float,
-    lubricant: str = "e-drive ATF",
+    lubricant: str = ...,  # "e-drive ATF"
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
     housing_material: Optional[Material] = None,
@@ -473,7 +500,7 @@ def seed_a_steady_temperatures(
     inner_ring_w: float,
     balls_w: float,
     outer_ring_w: float,
-    lubricant: str = "e-drive ATF",
+    lubricant: str = ...,  # "e-drive ATF"
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
     housing_material: Optional[Material] = None,

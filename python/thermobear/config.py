@@ -4,9 +4,13 @@ the package (``thermobear/configs/``)."""
 
 from __future__ import annotations
 
+import re
 import tomllib
+from collections.abc import Iterator
+from contextlib import contextmanager
 from importlib import resources
 from pathlib import Path
+from typing import Any, Optional
 
 import numpy as np
 
@@ -35,17 +39,23 @@ def seed_config(name: str) -> str:
 
 def load_config(path_or_text: str | Path) -> str:
     """Read a system description from a path (or take TOML text as is),
-    check it on the Rust side and return the text."""
+    check it on the Rust side and return the text. A ``ConfigError`` names
+    the file (when read from one), the line and the key at fault."""
     text = str(path_or_text)
-    p = Path(text)
+    p: Optional[Path] = None
     if "\n" not in text and "=" not in text:
         from .errors import ConfigError
 
+        p = Path(text)
         try:
             text = p.read_text()
         except OSError as e:
-            raise ConfigError(f"invalid path = {p}: cannot read: {e}") from None
-    _native.check_config(text)
+            err = ConfigError(f"{p}: cannot read: {e.strerror or e}")
+            vars(err).update(location=(str(err), None, None), path=str(p), line=None, key=None)
+            raise err from None
+    with located_config_errors(p, text):
+        tomllib.loads(text)
+        _native.check_config(text)
     return text
 
 
@@ -65,3 +75,184 @@ def sweep_speeds(cfg: dict, quick: bool = False) -> np.ndarray:
     if quick:
         n = min(n, 11)
     return np.linspace(float(sw["speed_start_rpm"]), float(sw["speed_stop_rpm"]), n)
+
+
+# ------------------------------------------------------------ error location
+#
+# A ConfigError raised while a TOML file is read or used is re-raised with
+# the file, the line and the (dotted) key it concerns in front of the
+# message: "system.toml:6: key bearing.ball_diameter_mm: must be ...". The
+# line comes from the TOML parser when it gives one ("at line 6, column
+# 1"); otherwise the key (or value) named by the message ("invalid
+# ball_diameter_mm = -12: ...") is looked up in the file's text.
+
+_AT_LINE = re.compile(r"at line (\d+), column (\d+)")
+_INVALID = re.compile(r"invalid (?:key = )?['\"]?([A-Za-z_][\w.-]*)['\"]? = ['\"]?([^'\":]*)")
+_NAMED_KEY = re.compile(r"invalid key = ['\"]?([A-Za-z_][\w.-]*)")
+_KEY = re.compile(r"invalid (?:key = )?['\"]?([A-Za-z_][\w.-]*)")
+_IN_TABLE = re.compile(r"in \[([\w.-]+)\]")
+_HEADER = re.compile(r"^\s*\[\[?\s*([^\]]+?)\s*\]\]?\s*(?:#.*)?$")
+_ENTRY = re.compile(
+    r"^\s*((?:[A-Za-z0-9_-]+|\"[^\"]*\"|'[^']*')(?:\s*\.\s*(?:[A-Za-z0-9_-]+|\"[^\"]*\"|'[^']*'))*)\s*=(.*)$"
+)
+
+
+def _strip_comment(raw: str) -> str:
+    """``raw`` up to a ``#`` that is not inside a quoted string."""
+    quote = ""
+    for i, ch in enumerate(raw):
+        if quote:
+            if ch == quote:
+                quote = ""
+        elif ch in "\"'":
+            quote = ch
+        elif ch == "#":
+            return raw[:i]
+    return raw
+
+
+def _toml_entries(text: str) -> list[tuple[str, str, int, str]]:
+    """(table, key, line, raw value) of every ``key = value`` line of TOML
+    text and ("", table, line, "") of every table header; lines from 1, an
+    array over several lines gathered into its raw value."""
+    out: list[tuple[str, str, int, str]] = []
+    table = ""
+    lines = text.splitlines()
+    i = 0
+    while i < len(lines):
+        line = lines[i]
+        h = _HEADER.match(line)
+        m = None if h else _ENTRY.match(line)
+        if h:
+            table = h.group(1).replace(" ", "").replace('"', "").replace("'", "")
+            out.append(("", table, i + 1, ""))
+        elif m:
+            key = re.sub(r"\s*\.\s*", ".", m.group(1)).replace('"', "").replace("'", "")
+            raw = _strip_comment(m.group(2)).strip()
+            start = i
+            while raw.startswith("[") and raw.count("[") > raw.count("]") and i + 1 < len(lines):
+                i += 1
+                raw += " " + _strip_comment(lines[i]).strip()
+            out.append((table, key, start + 1, raw))
+        i += 1
+    return out
+
+
+def _value_matches(raw: str, value: str) -> bool:
+    value = value.strip()
+    if not value or not raw:
+        return False
+    try:
+        return float(raw) == float(value)
+    except ValueError:
+        pass
+    if raw.strip("\"'") == value:
+        return True
+    return raw.startswith("[") and (f'"{value}"' in raw or f"'{value}'" in raw)
+
+
+def locate_in_toml(text: str, message: str) -> tuple[Optional[int], Optional[str]]:
+    """The line (from 1) and the dotted key (``table.key``) that a
+    ``ConfigError`` message concerns in the TOML ``text``; None where they
+    cannot be told."""
+    entries = _toml_entries(text)
+
+    def dotted(table: str, key: str) -> str:
+        return f"{table}.{key}" if table else key
+
+    at = _AT_LINE.search(message)
+    if at is not None:
+        line = int(at.group(1))
+        for table, key, n, _ in entries:
+            if n == line:
+                return line, dotted(table, key)
+        return line, None
+    m = _NAMED_KEY.search(message) or _INVALID.search(message) or _KEY.search(message)
+    if m is None:
+        return None, None
+    name = m.group(1)
+    value = m.group(2) if m.re is _INVALID else ""
+    t = _IN_TABLE.search(message)
+    if t is not None:
+        entries = [e for e in entries if e[0] == t.group(1) or (e[0] == "" and e[1] == t.group(1))]
+    keyed = [e for e in entries if e[0] and (e[1] == name or e[1].endswith("." + name))]
+    both = [e for e in keyed if _value_matches(e[3], value)]
+    by_value = [e for e in entries if e[0] and _value_matches(e[3], value)]
+    headers = [e for e in entries if not e[0] and e[1] == name]
+    top = [e for e in entries if not e[0] and e[1] == name.split(".")[0]] if not t else []
+    for found in (both, keyed, by_value, headers, top):
+        if found:
+            table, key, n, _ = found[0]
+            return n, dotted(table, key)
+    return None, None
+
+
+def _clean_message(message: str) -> str:
+    """A TOML parser's message on one line without its source excerpt."""
+    caret = re.search(r"\|\s*\^+\s*(.*)$", message, re.S)
+    if caret is not None and _AT_LINE.search(message):
+        message = caret.group(1)
+    message = re.sub(r"\s*\(at line \d+, column \d+\)", "", message)
+    message = re.sub(r"^system description: ", "", message)
+    return " ".join(message.split())
+
+
+def config_error_at(
+    error: BaseException, path: Optional[Path | str], text: Optional[str]
+) -> BaseException:
+    """``error`` (a ``ConfigError`` or a ``tomllib.TOMLDecodeError``) as a
+    ``ConfigError`` that names the file ``path`` (when given), the line and
+    the key in ``text``; the location is also on its ``path``, ``line`` and
+    ``key`` attributes. An error that names its location already keeps it
+    (a path is added when it had none)."""
+    from .errors import ConfigError
+
+    loc: Any = getattr(error, "location", None)
+    if loc is not None:
+        message, line, key = loc
+        if getattr(error, "path", None) is not None or path is None:
+            return error
+    else:
+        raw = str(error)
+        message = _clean_message(raw)
+        if isinstance(error, tomllib.TOMLDecodeError):
+            message = "invalid TOML: " + message
+        line, key = locate_in_toml(text, raw) if text is not None else (None, None)
+        lineno = getattr(error, "lineno", None)  # tomllib gives it from Python 3.14
+        if line is None and lineno is not None:
+            line = int(lineno)
+    where = []
+    if path is not None:
+        where.append(f"{path}:{line}" if line is not None else str(path))
+    elif line is not None:
+        where.append(f"line {line}")
+    if key is not None:
+        where.append(f"key {key}")
+    cls = type(error) if isinstance(error, ConfigError) else ConfigError
+    out = cls(": ".join(where + [message]))
+    vars(out).update(
+        location=(message, line, key),
+        path=None if path is None else str(path),
+        line=line,
+        key=key,
+    )
+    return out
+
+
+@contextmanager
+def located_config_errors(path: Optional[Path | str], text: Optional[str] = None) -> Iterator[None]:
+    """Re-raise a ``ConfigError`` or a TOML syntax error raised inside the
+    block with the file ``path``, the line and the key it concerns (see
+    ``config_error_at``); ``text``: the file's TOML (read from ``path``
+    when not given)."""
+    from .errors import ConfigError
+
+    try:
+        yield
+    except (ConfigError, tomllib.TOMLDecodeError) as e:
+        if text is None and path is not None:
+            try:
+                text = Path(path).read_text()
+            except OSError:
+                text = None
+        raise config_error_at(e, path, text) from None

@@ -17,7 +17,7 @@ use crate::error::{non_negative, Result};
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct OperatingPoint {
     /// Load on the inner ring [Fx, Fy, Fz, Mx, My] (N, N m).
-    pub load_n_nm: [f64; 5],
+    pub load: [f64; 5],
     /// Inner-ring (shaft) speed \[rpm\]; 0 gives the static solve.
     pub speed_rpm: f64,
     /// Solver options of this point (effects, raceway control, tilt).
@@ -29,9 +29,9 @@ pub struct OperatingPoint {
 pub fn solve_point(model: &BearingModel, point: &OperatingPoint) -> Result<BearingState> {
     let speed = non_negative("speed_rpm", point.speed_rpm)?;
     if speed == 0.0 {
-        model.solve_static(&point.load_n_nm, &point.options)
+        model.solve_static(&point.load, &point.options)
     } else {
-        model.solve(&point.load_n_nm, speed, &point.options)
+        model.solve(&point.load, speed, &point.options)
     }
 }
 
@@ -45,12 +45,12 @@ pub fn solve_many(model: &BearingModel, points: &[OperatingPoint]) -> Vec<Result
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PointSummary {
     /// Seed A axial stiffness \[N/m\].
-    pub axial_stiffness_n_per_m: f64,
+    pub axial_stiffness_seed_n_per_m: f64,
     /// Seed A radial stiffness \[N/m\].
-    pub radial_stiffness_n_per_m: f64,
+    pub radial_stiffness_seed_n_per_m: f64,
     /// Diagonal of the 5x5 tangent stiffness (N/m for x, y, z; N m/rad for
     /// the tilts).
-    pub stiffness_diagonal_si: [f64; 5],
+    pub stiffness_diagonal: [f64; 5],
     /// Axial displacement of the inner ring \[m\].
     pub axial_displacement_m: f64,
     /// Radial displacement of the inner ring (length of dx, dy) \[m\].
@@ -84,12 +84,12 @@ fn range(balls: &[BallState], f: impl Fn(&BallState) -> f64) -> (f64, f64) {
 
 impl From<&BearingState> for PointSummary {
     fn from(s: &BearingState) -> Self {
-        let q = &s.displacement_m_rad;
+        let q = &s.displacement;
         let n = s.balls.len().max(1) as f64;
         PointSummary {
-            axial_stiffness_n_per_m: s.axial_stiffness_n_per_m,
-            radial_stiffness_n_per_m: s.radial_stiffness_n_per_m,
-            stiffness_diagonal_si: std::array::from_fn(|i| s.stiffness_matrix_si[i][i]),
+            axial_stiffness_seed_n_per_m: s.axial_stiffness_seed_n_per_m,
+            radial_stiffness_seed_n_per_m: s.radial_stiffness_seed_n_per_m,
+            stiffness_diagonal: std::array::from_fn(|i| s.stiffness_matrix[i][i]),
             axial_displacement_m: q[2],
             radial_displacement_m: q[0].hypot(q[1]),
             tilt_rad: q[3].hypot(q[4]),
@@ -120,7 +120,7 @@ mod tests {
         for &speed in &[0.0, 6_000.0, 16_000.0] {
             for &fa in &[300.0, 2680.9] {
                 v.push(OperatingPoint {
-                    load_n_nm: [1189.9, 0.0, fa, 0.0, 0.0],
+                    load: [1189.9, 0.0, fa, 0.0, 0.0],
                     speed_rpm: speed,
                     options: held,
                 });
@@ -128,7 +128,7 @@ mod tests {
         }
         // A point that cannot be solved: negative speed.
         v.push(OperatingPoint {
-            load_n_nm: [0.0, 0.0, 500.0, 0.0, 0.0],
+            load: [0.0, 0.0, 500.0, 0.0, 0.0],
             speed_rpm: -1.0,
             options: held,
         });
@@ -146,9 +146,9 @@ mod tests {
             let single = if p.speed_rpm < 0.0 {
                 Err(crate::Error::config("speed_rpm", p.speed_rpm, "must not be negative"))
             } else if p.speed_rpm == 0.0 {
-                m.solve_static(&p.load_n_nm, &p.options)
+                m.solve_static(&p.load, &p.options)
             } else {
-                m.solve(&p.load_n_nm, p.speed_rpm, &p.options)
+                m.solve(&p.load, p.speed_rpm, &p.options)
             };
             assert_eq!(&single, r);
         }
@@ -161,7 +161,7 @@ mod tests {
         let b = Bearing::preset("7008C").unwrap();
         let m = BearingModel::new(&b).unwrap();
         let p = OperatingPoint {
-            load_n_nm: [0.0, 0.0, 800.0, 0.0, 0.0],
+            load: [0.0, 0.0, 800.0, 0.0, 0.0],
             speed_rpm: 12_000.0,
             options: SolveOptions::default(),
         };
@@ -174,6 +174,6 @@ mod tests {
         assert!((sum.cage_speed_rad_s - s.balls[0].orbit_speed_rad_s).abs() < 1e-9 * sum.cage_speed_rad_s);
         // Outer loads exceed inner loads by the centrifugal force at speed.
         assert!(sum.outer_load_max_n > sum.inner_load_max_n);
-        assert_eq!(sum.stiffness_diagonal_si[2], s.stiffness_matrix_si[2][2]);
+        assert_eq!(sum.stiffness_diagonal[2], s.stiffness_matrix[2][2]);
     }
 }

@@ -23,7 +23,7 @@
 //! assert!(s.balls.iter().all(|ball| ball.outer_load_n > ball.inner_load_n));
 //! let m = BearingModel::new(&b).unwrap();
 //! let curve = stiffness_curve(&m, &[6_500.0, 16_500.0], 2680.9, 1189.9, &SolveOptions::default()).unwrap();
-//! assert!(curve[1].axial_stiffness_n_per_m < curve[0].axial_stiffness_n_per_m);
+//! assert!(curve[1].axial_stiffness_seed_n_per_m < curve[0].axial_stiffness_seed_n_per_m);
 //! ```
 
 pub mod batch;

@@ -49,7 +49,9 @@ use super::dual::Dual;
 use super::kinematics::{ball_kinematics, kinematics};
 use super::model::BearingModel;
 use super::state::{BallState, BearingState, RacewayControl, SolveOptions};
-use super::statics::{check_options, initial_guess, solve_ring, solve_static, static_displacement};
+use super::statics::{
+    check_moment_with_tilt, check_options, initial_guess, solve_ring, solve_static, static_displacement,
+};
 use super::stiffness::seed_stiffness;
 use super::Bearing;
 use crate::effects::Effect;
@@ -101,7 +103,7 @@ impl SpeedContext {
     pub(crate) fn new(model: &BearingModel, speed_rpm: f64, opts: &SolveOptions) -> Result<Self> {
         crate::error::finite("speed_rpm", speed_rpm)?;
         let omega_i = rpm_to_rad_s(speed_rpm);
-        let (lam_i, lam_o) = opts.control.lambdas();
+        let (lam_i, lam_o) = opts.raceway_control.lambdas();
         let u_r = if opts.effects.has(Effect::RingCentrifugalExpansion) {
             model.ring_expansion_m(omega_i)
         } else {
@@ -112,7 +114,7 @@ impl SpeedContext {
             u_r,
             centrifugal: opts.effects.has(Effect::CentrifugalForce) && omega_i != 0.0,
             gyroscopic: opts.effects.has(Effect::GyroscopicMoment) && omega_i != 0.0,
-            control: opts.control,
+            control: opts.raceway_control,
             sign: opts.gyro_couple_sign.factor(),
             lam_i,
             lam_o,
@@ -688,9 +690,9 @@ pub(crate) fn qs_balls(
 pub struct RingForces {
     /// Reaction of the balls on the inner ring [Fx, Fy, Fz, Mx, My] (N, N m);
     /// at equilibrium it balances the applied load (load + reaction = 0).
-    pub reaction_n_nm: [f64; 5],
+    pub reaction: [f64; 5],
     /// Tangent stiffness K = -d(reaction)/dq (N/m, N/rad, N m/m, N m/rad).
-    pub stiffness_matrix_si: [[f64; 5]; 5],
+    pub stiffness_matrix: [[f64; 5]; 5],
 }
 
 impl BearingModel {
@@ -713,8 +715,8 @@ impl BearingModel {
         let ctx = SpeedContext::new(self, speed_rpm, opts)?;
         let (reaction, k) = qs_ring(self, &ctx, q, opts, warm)?;
         Ok(RingForces {
-            reaction_n_nm: reaction,
-            stiffness_matrix_si: k,
+            reaction,
+            stiffness_matrix: k,
         })
     }
 
@@ -752,6 +754,7 @@ impl BearingModel {
         warm: &mut WarmStart,
     ) -> Result<BearingState> {
         self.check_load(load)?;
+        check_moment_with_tilt(load, opts)?;
         check_options(opts)?;
         let ctx = SpeedContext::new(self, speed_rpm, opts)?;
         let sol = solve_ring(
@@ -768,12 +771,12 @@ impl BearingModel {
         let balls = qs_balls(self, &ctx, &sol.q, opts, warm);
         let (ka, kr) = seed_stiffness(self, &balls);
         BearingState {
-            displacement_m_rad: sol.q,
-            applied_load_n_nm: sol.load,
+            displacement: sol.q,
+            applied_load: sol.load,
             balls,
-            stiffness_matrix_si: k,
-            axial_stiffness_n_per_m: ka,
-            radial_stiffness_n_per_m: kr,
+            stiffness_matrix: k,
+            axial_stiffness_seed_n_per_m: ka,
+            radial_stiffness_seed_n_per_m: kr,
             iterations: sol.iterations,
             residual: sol.residual,
             speed_rpm,
@@ -798,11 +801,17 @@ pub(crate) fn static_start_q(model: &BearingModel, load: &[f64; 5], opts: &Solve
 }
 
 impl Bearing {
-    /// Quasi-static solve at `speed_rpm` for an axial load, a radial load
-    /// along x and a tilting moment about y (builds a [`BearingModel`]; keep
-    /// the model when solving many times).
+    /// Solve for an axial load, a radial load along x and a tilting moment
+    /// about y at `speed_rpm`: the static (Hertz) solve at 0 rpm, the
+    /// quasi-static one above, as Python's `Bearing.solve` (builds a
+    /// [`BearingModel`]; keep the model when solving many times).
     pub fn solve(&self, load: BearingLoad, speed_rpm: f64, opts: &SolveOptions) -> Result<BearingState> {
-        BearingModel::new(self)?.solve(&load.to_vector(), speed_rpm, opts)
+        let model = BearingModel::new(self)?;
+        if speed_rpm == 0.0 {
+            model.solve_static(&load.to_vector(), opts)
+        } else {
+            model.solve(&load.to_vector(), speed_rpm, opts)
+        }
     }
 }
 
@@ -818,7 +827,7 @@ pub fn ring_forces(
     let model = BearingModel::new(bearing)?;
     let mut warm = WarmStart::new();
     let f = model.ring_forces(q, speed_rpm, opts, &mut warm)?;
-    Ok((f.reaction_n_nm, model.ball_states(q, speed_rpm, opts, &warm)?))
+    Ok((f.reaction, model.ball_states(q, speed_rpm, opts, &warm)?))
 }
 
 #[cfg(test)]
@@ -829,7 +838,7 @@ mod tests {
     fn fixture(name: &str, control: RacewayControl) -> (BearingModel, SpeedContext, SolveOptions) {
         let m = BearingModel::new(&Bearing::preset(name).unwrap()).unwrap();
         let o = SolveOptions {
-            control,
+            raceway_control: control,
             ..Default::default()
         };
         let ctx = SpeedContext::new(&m, 18_000.0, &o).unwrap();
@@ -900,7 +909,7 @@ mod tests {
             assert!(dhdt[1] > 0.0 && (dhdt[1] - b.gyroscopic_moment_n_m).abs() < 1e-9 * dhdt[1]);
             // The friction forces the ball equilibrium uses: the residual
             // minus its normal-load and centrifugal parts.
-            let p = m.groove_distances(0, &s.displacement_m_rad, ctx.u_r, &o.offsets);
+            let p = m.groove_distances(0, &s.displacement, ctx.u_r, &o.offsets);
             let x = warm.balls[0].x;
             let t = ball_terms(&m, &ctx, x, p);
             let normal_ax = t.qi * ai.sin() - t.qo * ao.sin();

@@ -49,15 +49,20 @@ impl GyroCoupleSign {
 }
 
 /// How the ring tilt (theta_x, theta_y) is treated.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+///
+/// The default holds the ring level ([`Tilt::held_level`]): in a machine the
+/// shaft and the housing align the rings, which is also the Python default
+/// (`misalignment_rad=0.0`). [`Tilt::Free`] is the option for a ring whose
+/// tilt is solved from the applied moments (Python `misalignment_rad=None`).
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Tilt {
     /// The tilts are unknowns balanced by the applied moments Mx, My (full
     /// 5-DOF equilibrium; a ring under combined load without moment tilts).
-    #[default]
     Free,
     /// The tilts are held at the given values (a ring held by a stiff shaft
-    /// and housing, the usual 3-DOF bearing model); the applied moments are
-    /// ignored and the state reports the moments needed to hold the tilt.
+    /// and housing, the usual 3-DOF bearing model and the default, level);
+    /// the applied moments are ignored and the state reports the moments
+    /// needed to hold the tilt.
     Fixed {
         /// Held inner-ring tilt about the x axis \[rad\].
         theta_x_rad: f64,
@@ -67,12 +72,20 @@ pub enum Tilt {
 }
 
 impl Tilt {
-    /// No tilt, held (seed A's axial/radial model).
+    /// No tilt, held (seed A's axial/radial model); the default.
     pub fn held_level() -> Self {
         Tilt::Fixed {
             theta_x_rad: 0.0,
             theta_y_rad: 0.0,
         }
+    }
+}
+
+impl Default for Tilt {
+    /// Held level, as a shaft and housing hold the rings of a bearing in a
+    /// machine (and as the Python package does by default).
+    fn default() -> Self {
+        Tilt::held_level()
     }
 }
 
@@ -83,7 +96,7 @@ pub struct SolveOptions {
     /// ring_centrifugal_expansion). Default: all on.
     pub effects: EffectSet,
     /// Raceway control hypothesis. Default: outer.
-    pub control: RacewayControl,
+    pub raceway_control: RacewayControl,
     /// Sign of the gyroscopic friction couple. Default: derived.
     pub gyro_couple_sign: GyroCoupleSign,
     /// Relative tolerance on the ring force balance (residual / max(|load|, 1 N)).
@@ -92,7 +105,10 @@ pub struct SolveOptions {
     pub max_iterations: usize,
     /// Thermal or fit offsets of the groove centres. Default zero.
     pub offsets: RacewayOffsets,
-    /// Free or held ring tilt. Default: free.
+    /// Held or free ring tilt. Default: held level ([`Tilt::held_level`],
+    /// the applied moments are then ignored and the state reports the
+    /// moments that hold the ring); [`Tilt::Free`] solves the tilt from the
+    /// applied moments.
     pub tilt: Tilt,
     /// Largest friction coefficient of the ball-raceway contacts available
     /// to hold the gyroscopic moment of a ball without centrifugal force
@@ -111,12 +127,12 @@ impl Default for SolveOptions {
     fn default() -> Self {
         SolveOptions {
             effects: EffectSet::all(),
-            control: RacewayControl::Outer,
+            raceway_control: RacewayControl::Outer,
             gyro_couple_sign: GyroCoupleSign::Derived,
             tolerance: 1e-9,
             max_iterations: 100,
             offsets: RacewayOffsets::default(),
-            tilt: Tilt::Free,
+            tilt: Tilt::held_level(),
             traction_coefficient: 0.1,
         }
     }
@@ -192,23 +208,27 @@ pub struct BallState {
 }
 
 /// A solved bearing.
+///
+/// The vectors and the matrix are SI, the crate's convention, and carry the
+/// names of their Python twins (`BearingSolution.displacement`,
+/// `.applied_load`, and `.stiffness` for `stiffness_matrix`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct BearingState {
-    /// Inner-ring displacement [dx, dy, dz, theta_x, theta_y] (m, rad), ISO
-    /// convention (see [`super::model`]).
-    pub displacement_m_rad: [f64; 5],
-    /// Applied load [Fx, Fy, Fz, Mx, My] (N, N m); with a held tilt
-    /// ([`Tilt::Fixed`]) Mx, My are the moments that hold it.
-    pub applied_load_n_nm: [f64; 5],
+    /// Inner-ring displacement [dx, dy, dz, theta_x, theta_y] in SI (m, rad),
+    /// ISO convention (see [`super::model`]).
+    pub displacement: [f64; 5],
+    /// Applied load [Fx, Fy, Fz, Mx, My] in SI (N, N m); with a held tilt
+    /// ([`Tilt::Fixed`], the default) Mx, My are the moments that hold it.
+    pub applied_load: [f64; 5],
     /// Per-ball states, ball j at psi_j = 2 pi j / Z.
     pub balls: Vec<BallState>,
-    /// Tangent stiffness K = -d(reaction)/dq, rows/columns ordered as q;
-    /// units N/m, N/rad, N m/m, N m/rad by block.
-    pub stiffness_matrix_si: [[f64; 5]; 5],
+    /// Tangent stiffness K = -d(reaction)/dq, rows/columns ordered as q, in
+    /// SI like everything in the crate: N/m, N/rad, N m/m, N m/rad by block.
+    pub stiffness_matrix: [[f64; 5]; 5],
     /// Axial stiffness by the seed's formula (A-39, A-40) [N/m].
-    pub axial_stiffness_n_per_m: f64,
+    pub axial_stiffness_seed_n_per_m: f64,
     /// Radial stiffness by the seed's formula (A-41, A-42) [N/m].
-    pub radial_stiffness_n_per_m: f64,
+    pub radial_stiffness_seed_n_per_m: f64,
     /// Ring Newton iterations used.
     pub iterations: usize,
     /// Final relative force residual.
@@ -218,6 +238,53 @@ pub struct BearingState {
 }
 
 impl BearingState {
+    /// The tangent stiffness under its former name (SI); use the field
+    /// [`BearingState::stiffness_matrix`].
+    #[deprecated(
+        since = "0.2.0",
+        note = "use the field `stiffness_matrix` (SI, as everything in the crate)"
+    )]
+    pub fn stiffness_matrix_si(&self) -> [[f64; 5]; 5] {
+        self.stiffness_matrix
+    }
+
+    /// The inner-ring displacement under its former name; use the field
+    /// [`BearingState::displacement`].
+    #[deprecated(since = "0.2.0", note = "use the field `displacement` (m, rad)")]
+    pub fn displacement_m_rad(&self) -> [f64; 5] {
+        self.displacement
+    }
+
+    /// The seed formula's axial stiffness under its former name \[N/m\].
+    #[deprecated(since = "0.2.0", note = "use the field `axial_stiffness_seed_n_per_m`")]
+    pub fn axial_stiffness_n_per_m(&self) -> f64 {
+        self.axial_stiffness_seed_n_per_m
+    }
+
+    /// The seed formula's radial stiffness under its former name \[N/m\].
+    #[deprecated(since = "0.2.0", note = "use the field `radial_stiffness_seed_n_per_m`")]
+    pub fn radial_stiffness_n_per_m(&self) -> f64 {
+        self.radial_stiffness_seed_n_per_m
+    }
+
+    /// Radial displacement of the inner ring, sqrt(dx^2 + dy^2) \[um\], as
+    /// Python's `BearingSolution.radial_displacement_um`.
+    pub fn radial_displacement_um(&self) -> f64 {
+        self.displacement[0].hypot(self.displacement[1]) * 1e6
+    }
+
+    /// Axial displacement of the inner ring dz \[um\], as Python's
+    /// `BearingSolution.axial_displacement_um`.
+    pub fn axial_displacement_um(&self) -> f64 {
+        self.displacement[2] * 1e6
+    }
+
+    /// Ring tilt sqrt(theta_x^2 + theta_y^2) \[rad\], as Python's
+    /// `BearingSolution.tilt_rad`.
+    pub fn tilt_rad(&self) -> f64 {
+        self.displacement[3].hypot(self.displacement[4])
+    }
+
     /// The state if every number in it is finite, else a convergence error
     /// naming `solver` (never a silent NaN; e.g. the quasi-static model is
     /// ill-posed for balls out of contact at a vanishing speed).
@@ -245,10 +312,10 @@ impl BearingState {
             .iter()
             .all(|v| v.is_finite())
         };
-        let finite = self.displacement_m_rad.iter().all(|v| v.is_finite())
-            && self.stiffness_matrix_si.iter().flatten().all(|v| v.is_finite())
-            && self.axial_stiffness_n_per_m.is_finite()
-            && self.radial_stiffness_n_per_m.is_finite()
+        let finite = self.displacement.iter().all(|v| v.is_finite())
+            && self.stiffness_matrix.iter().flatten().all(|v| v.is_finite())
+            && self.axial_stiffness_seed_n_per_m.is_finite()
+            && self.radial_stiffness_seed_n_per_m.is_finite()
             && self.balls.iter().all(ball_ok);
         if finite {
             Ok(self)

@@ -187,16 +187,18 @@ pub(crate) fn static_balls(model: &BearingModel, q: &[f64; 5], opts: &SolveOptio
 /// Solve the zero-speed equilibrium for the load [Fx, Fy, Fz, Mx, My]
 /// (N, N m) on the inner ring.
 pub fn solve_static(model: &BearingModel, load: &[f64; 5], opts: &SolveOptions) -> Result<BearingState> {
+    model.check_load(load)?;
+    check_moment_with_tilt(load, opts)?;
     let sol = static_displacement(model, load, opts)?;
     let balls = static_balls(model, &sol.q, opts);
     let (ka, kr) = seed_stiffness(model, &balls);
     BearingState {
-        displacement_m_rad: sol.q,
-        applied_load_n_nm: sol.load,
+        displacement: sol.q,
+        applied_load: sol.load,
         balls,
-        stiffness_matrix_si: sol.k,
-        axial_stiffness_n_per_m: ka,
-        radial_stiffness_n_per_m: kr,
+        stiffness_matrix: sol.k,
+        axial_stiffness_seed_n_per_m: ka,
+        radial_stiffness_seed_n_per_m: kr,
         iterations: sol.iterations,
         residual: sol.residual,
         speed_rpm: 0.0,
@@ -212,6 +214,24 @@ pub(crate) fn static_displacement(model: &BearingModel, load: &[f64; 5], opts: &
     solve_ring(model, load, q0, 0.0, opts, "static bearing equilibrium", &mut |q| {
         Ok(static_ring(model, q, opts))
     })
+}
+
+/// A held tilt ([`Tilt::Fixed`], the default) makes the moments reactions:
+/// an applied moment Mx or My would be ignored, so it is refused with the
+/// way out (a free tilt carries it), as in the Python package.
+pub(crate) fn check_moment_with_tilt(load: &[f64; 5], opts: &SolveOptions) -> Result<()> {
+    if matches!(opts.tilt, Tilt::Fixed { .. }) {
+        for (i, name) in [(3, "moment_x_n_m"), (4, "moment_y_n_m")] {
+            if load[i] != 0.0 {
+                return Err(Error::config(
+                    name,
+                    load[i],
+                    "a moment needs a free tilt: set SolveOptions::tilt to Tilt::Free (with the default held tilt the moments are reactions)",
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 pub(crate) fn check_options(opts: &SolveOptions) -> Result<()> {
@@ -513,8 +533,12 @@ mod tests {
         let mut m = BearingModel::new(&Bearing::preset("7009C").unwrap()).unwrap();
         m.inner.freeze();
         m.outer.freeze();
-        let s = solve_static(&m, &[900.0, -300.0, 1500.0, 8.0, -12.0], &SolveOptions::default()).unwrap();
-        let k = s.stiffness_matrix_si;
+        let free = SolveOptions {
+            tilt: Tilt::Free,
+            ..SolveOptions::default()
+        };
+        let s = solve_static(&m, &[900.0, -300.0, 1500.0, 8.0, -12.0], &free).unwrap();
+        let k = s.stiffness_matrix;
         for i in 0..5 {
             for j in 0..5 {
                 let scale = (k[i][i] * k[j][j]).sqrt();

@@ -9,7 +9,7 @@
 //! * the full 5x5 tangent stiffness K = -d(reaction)/dq at the solved state,
 //!   computed in the solvers from exact derivatives (per-ball equilibrium
 //!   condensed by the implicit-function theorem at speed); see
-//!   [`super::BearingState::stiffness_matrix_si`].
+//!   [`super::BearingState::stiffness_matrix`].
 //!
 //! The seed's formula ignores the change of the contact angles with the
 //! displacement (the geometric stiffness Q/L) and the coupling terms, so it

@@ -33,13 +33,13 @@ pub struct StiffnessPoint {
     /// Inner-ring (shaft) speed \[rpm\]; the outer ring is stationary.
     pub speed_rpm: f64,
     /// Seed formula A-39, A-40 [N/m].
-    pub axial_stiffness_n_per_m: f64,
+    pub axial_stiffness_seed_n_per_m: f64,
     /// Seed formula A-41, A-42 [N/m].
-    pub radial_stiffness_n_per_m: f64,
+    pub radial_stiffness_seed_n_per_m: f64,
     /// Full tangent stiffness K = -d(reaction)/dq (N/m, N/rad, N m/m, N m/rad).
-    pub stiffness_matrix_si: [[f64; 5]; 5],
+    pub stiffness_matrix: [[f64; 5]; 5],
     /// Inner-ring displacement [dx, dy, dz, theta_x, theta_y] (m, rad).
-    pub displacement_m_rad: [f64; 5],
+    pub displacement: [f64; 5],
     /// Inner contact angle of each ball \[rad\].
     pub inner_contact_angles_rad: Vec<f64>,
     /// Outer contact angle of each ball \[rad\].
@@ -50,10 +50,10 @@ impl From<&BearingState> for StiffnessPoint {
     fn from(s: &BearingState) -> Self {
         StiffnessPoint {
             speed_rpm: s.speed_rpm,
-            axial_stiffness_n_per_m: s.axial_stiffness_n_per_m,
-            radial_stiffness_n_per_m: s.radial_stiffness_n_per_m,
-            stiffness_matrix_si: s.stiffness_matrix_si,
-            displacement_m_rad: s.displacement_m_rad,
+            axial_stiffness_seed_n_per_m: s.axial_stiffness_seed_n_per_m,
+            radial_stiffness_seed_n_per_m: s.radial_stiffness_seed_n_per_m,
+            stiffness_matrix: s.stiffness_matrix,
+            displacement: s.displacement,
             inner_contact_angles_rad: s.balls.iter().map(|b| b.inner_contact_angle_rad).collect(),
             outer_contact_angles_rad: s.balls.iter().map(|b| b.outer_contact_angle_rad).collect(),
         }

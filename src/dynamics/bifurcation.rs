@@ -13,8 +13,17 @@
 //!
 //! Progress/cancellation: `progress(done, total)` is called between chunks
 //! (after each speed for continuation sweeps, after each chunk of
-//! [`CHUNK`] speeds otherwise); returning `false` stops the work with
-//! `Error::Interrupted`.
+//! [`CHUNK`] speeds otherwise, and with `done` unchanged before each batch
+//! of [`LANES`] parallel speeds, so that a stop is seen quickly); returning
+//! `false` stops the work with `Error::Interrupted`.
+//!
+//! Partial results: [`sweep_partial`], [`sweep_many_partial`] and
+//! [`regime_map_partial`] keep every finished speed when a speed fails or
+//! the work is stopped, and name the failed speeds. A continuation sweep
+//! stops at its first failed speed (the next speed would have to start
+//! from it); an independent sweep and a regime map run every other speed
+//! and report every failure. [`sweep`], [`sweep_many`] and [`regime_map`]
+//! return the first failure (in sweep order) instead.
 
 use super::batch::{self, LANES};
 use super::classify::{
@@ -201,6 +210,52 @@ pub struct SweepResult {
     pub unsettled: Vec<usize>,
 }
 
+/// A speed whose run failed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpeedFailure {
+    /// Index of the speed in the (ascending) requested speeds.
+    pub index: usize,
+    /// The speed.
+    pub speed: f64,
+    /// Why it failed.
+    pub error: Error,
+}
+
+/// What a sweep finished, and which speeds failed or were never run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PartialSweep {
+    /// The finished points, ascending speed. A point equals the same speed
+    /// of a complete run; `jumps` and `transitions` only join speeds that
+    /// are neighbours in the requested speeds.
+    pub result: SweepResult,
+    /// Failed speeds, in sweep order (at most one for a continuation sweep).
+    pub failures: Vec<SpeedFailure>,
+    /// Indices (ascending) of the speeds never run: past the failed speed
+    /// of a continuation sweep, or left when the work was stopped.
+    pub not_run: Vec<usize>,
+    /// The progress hook stopped the work before every speed ran.
+    pub interrupted: bool,
+}
+
+impl PartialSweep {
+    /// Every speed finished.
+    pub fn is_complete(&self) -> bool {
+        self.failures.is_empty() && !self.interrupted
+    }
+
+    /// The complete result, or the first failure in sweep order (then
+    /// `Error::Interrupted` when stopped).
+    pub fn into_result(self) -> Result<SweepResult> {
+        if let Some(f) = self.failures.into_iter().next() {
+            return Err(f.error);
+        }
+        if self.interrupted {
+            return Err(Error::Interrupted);
+        }
+        Ok(self.result)
+    }
+}
+
 fn check_config(cfg: &SweepConfig) -> Result<()> {
     if cfg.recorded_periods < 2 {
         return Err(Error::config(
@@ -368,6 +423,73 @@ fn finish(direction: SweepDirection, points: Vec<SpeedPoint>, cfg: &SweepConfig)
     }
 }
 
+/// Assemble a [`PartialSweep`] from per-speed slots (`None`: not finished).
+fn finish_slots(
+    direction: SweepDirection,
+    slots: Vec<Option<SpeedPoint>>,
+    mut failures: Vec<SpeedFailure>,
+    interrupted: bool,
+    cfg: &SweepConfig,
+) -> PartialSweep {
+    let failed: Vec<usize> = failures.iter().map(|f| f.index).collect();
+    let not_run: Vec<usize> = (0..slots.len())
+        .filter(|&i| slots[i].is_none() && !failed.contains(&i))
+        .collect();
+    let index: Vec<usize> = (0..slots.len()).filter(|&i| slots[i].is_some()).collect();
+    let mut result = finish(direction, slots.into_iter().flatten().collect(), cfg);
+    if index.len() < index.last().map_or(0, |&l| l + 1) {
+        let adjacent = |k: usize| index[k + 1] == index[k] + 1;
+        result.jumps.retain(|&k| adjacent(k));
+        result.transitions.retain(|t| adjacent(t.index));
+    }
+    if direction == SweepDirection::Down {
+        failures.sort_by_key(|f| std::cmp::Reverse(f.index));
+    } else {
+        failures.sort_by_key(|f| f.index);
+    }
+    PartialSweep {
+        result,
+        failures,
+        interrupted: interrupted && !not_run.is_empty(),
+        not_run,
+    }
+}
+
+/// Record and classify independent `(model, speed)` runs, each from its
+/// static state, as one lock-step batch. When the batch fails, every run
+/// is repeated alone (the batch equals the one-by-one runs exactly), so
+/// only the runs that fail on their own are reported.
+fn independent_points<const N: usize, M: SweepModel<N>>(
+    runs: &[(&M, f64)],
+    cfg: &SweepConfig,
+) -> Vec<Result<SpeedPoint>> {
+    let batch = (|| {
+        let starts = runs
+            .iter()
+            .map(|(m, s)| m.initial_state(*s))
+            .collect::<Result<Vec<_>>>()?;
+        let models: Vec<&M> = runs.iter().map(|r| r.0).collect();
+        let speeds: Vec<f64> = runs.iter().map(|r| r.1).collect();
+        M::poincare_many(&models, &speeds, &starts, cfg)
+    })();
+    match batch {
+        Ok(recs) => runs
+            .iter()
+            .zip(recs)
+            .map(|(&(m, s), r)| finish_point(m, s, r, cfg))
+            .collect(),
+        Err(Error::Interrupted) => vec![Err(Error::Interrupted); runs.len()],
+        Err(_) => runs
+            .iter()
+            .map(|&(m, s)| {
+                let x0 = m.initial_state(s)?;
+                let rec = record_speed(m, s, &x0, cfg)?;
+                finish_point(m, s, rec, cfg)
+            })
+            .collect(),
+    }
+}
+
 /// Shared progress counter for nested parallel work.
 struct Counter<'a> {
     done: AtomicUsize,
@@ -377,6 +499,17 @@ struct Counter<'a> {
 }
 
 impl Counter<'_> {
+    /// Ask the progress hook (without new progress) whether to go on:
+    /// parallel work calls this before each batch of lanes, so a stop is
+    /// seen within one batch instead of one chunk.
+    fn keep_going(&self) -> Result<()> {
+        if self.cancelled.load(Ordering::Relaxed) || !(self.progress)(self.done.load(Ordering::Relaxed), self.total) {
+            self.cancelled.store(true, Ordering::Relaxed);
+            return Err(Error::Interrupted);
+        }
+        Ok(())
+    }
+
     fn tick(&self, n: usize) -> Result<()> {
         if self.cancelled.load(Ordering::Relaxed) {
             return Err(Error::Interrupted);
@@ -396,81 +529,160 @@ fn sweep_counted<const N: usize, M: SweepModel<N>>(
     direction: SweepDirection,
     cfg: &SweepConfig,
     counter: &Counter,
-) -> Result<SweepResult> {
-    let points = match direction {
+) -> PartialSweep {
+    let n = speeds.len();
+    let mut slots: Vec<Option<SpeedPoint>> = vec![None; n];
+    let mut failures = Vec::new();
+    let mut interrupted = false;
+    match direction {
         SweepDirection::Independent => {
-            let mut out = Vec::with_capacity(speeds.len());
-            for chunk in speeds.chunks(CHUNK) {
-                let part: Result<Vec<Vec<SpeedPoint>>> = chunk
+            let all: Vec<usize> = (0..n).collect();
+            for chunk in all.chunks(CHUNK) {
+                let part: Vec<Vec<(usize, Result<SpeedPoint>)>> = chunk
                     .par_chunks(LANES)
-                    .map(|sp| {
-                        let starts = sp.iter().map(|&s| model.initial_state(s)).collect::<Result<Vec<_>>>()?;
-                        let models = vec![model; sp.len()];
-                        let recs = M::poincare_many(&models, sp, &starts, cfg)?;
-                        sp.iter()
-                            .zip(recs)
-                            .map(|(&s, r)| finish_point(model, s, r, cfg))
-                            .collect()
+                    .map(|ii| {
+                        if counter.keep_going().is_err() {
+                            return Vec::new();
+                        }
+                        let runs: Vec<(&M, f64)> = ii.iter().map(|&i| (model, speeds[i])).collect();
+                        ii.iter().copied().zip(independent_points(&runs, cfg)).collect()
                     })
                     .collect();
-                out.extend(part?.into_iter().flatten());
-                counter.tick(chunk.len())?;
+                for (i, r) in part.into_iter().flatten() {
+                    match r {
+                        Ok(p) => slots[i] = Some(p),
+                        Err(Error::Interrupted) => interrupted = true,
+                        Err(error) => failures.push(SpeedFailure {
+                            index: i,
+                            speed: speeds[i],
+                            error,
+                        }),
+                    }
+                }
+                if interrupted || counter.tick(chunk.len()).is_err() {
+                    interrupted = true;
+                    break;
+                }
             }
-            out
         }
         SweepDirection::Up | SweepDirection::Down => {
             let order: Vec<usize> = if direction == SweepDirection::Up {
-                (0..speeds.len()).collect()
+                (0..n).collect()
             } else {
-                (0..speeds.len()).rev().collect()
+                (0..n).rev().collect()
             };
-            let mut x = model.initial_state(speeds[order[0]])?;
-            let mut slots: Vec<Option<SpeedPoint>> = vec![None; speeds.len()];
+            let mut x = model.initial_state(speeds[order[0]]);
             for &i in &order {
-                let (p, xf) = run_speed(model, speeds[i], &x, cfg)?;
-                x = xf;
-                slots[i] = Some(p);
-                counter.tick(1)?;
+                let run = x.and_then(|x0| run_speed(model, speeds[i], &x0, cfg));
+                match run {
+                    Ok((p, xf)) => {
+                        slots[i] = Some(p);
+                        x = Ok(xf);
+                    }
+                    Err(Error::Interrupted) => {
+                        interrupted = true;
+                        break;
+                    }
+                    Err(error) => {
+                        failures.push(SpeedFailure {
+                            index: i,
+                            speed: speeds[i],
+                            error,
+                        });
+                        break;
+                    }
+                }
+                if counter.tick(1).is_err() {
+                    interrupted = true;
+                    break;
+                }
             }
-            slots.into_iter().flatten().collect()
         }
-    };
-    Ok(finish(direction, points, cfg))
+    }
+    finish_slots(direction, slots, failures, interrupted, cfg)
 }
 
-/// Continuation sweeps of several jobs in lock-step (one batch per speed step).
+/// Continuation sweeps of several jobs in lock-step (one batch per speed
+/// step). A job whose speed fails leaves the batch (its later speeds are
+/// not run); when a batch fails, its runs are repeated one by one (bitwise
+/// equal) so the other jobs go on.
 fn continuation_group<const N: usize, M: SweepModel<N>>(
     jobs: &[(&M, SweepDirection)],
     speeds: &[f64],
     cfg: &SweepConfig,
     counter: &Counter,
-) -> Result<Vec<SweepResult>> {
+) -> Vec<PartialSweep> {
     let ns = speeds.len();
     let index = |d: SweepDirection, i: usize| if d == SweepDirection::Down { ns - 1 - i } else { i };
-    let models: Vec<&M> = jobs.iter().map(|(m, _)| *m).collect();
-    let mut xs = jobs
-        .iter()
-        .map(|(m, d)| m.initial_state(speeds[index(*d, 0)]))
-        .collect::<Result<Vec<_>>>()?;
     let mut slots: Vec<Vec<Option<SpeedPoint>>> = vec![vec![None; ns]; jobs.len()];
-    for i in 0..ns {
-        let sp: Vec<f64> = jobs.iter().map(|(_, d)| speeds[index(*d, i)]).collect();
-        let recs = M::poincare_many(&models, &sp, &xs, cfg)?;
-        for (j, rec) in recs.into_iter().enumerate() {
-            let (p, xf) = settle_and_finish(models[j], sp[j], rec, cfg)?;
-            xs[j] = xf;
-            slots[j][index(jobs[j].1, i)] = Some(p);
+    let mut failures: Vec<Vec<SpeedFailure>> = vec![Vec::new(); jobs.len()];
+    let mut interrupted = false;
+    let mut xs: Vec<Option<[f64; N]>> = Vec::with_capacity(jobs.len());
+    for (j, (m, d)) in jobs.iter().enumerate() {
+        let k = index(*d, 0);
+        match m.initial_state(speeds[k]) {
+            Ok(x) => xs.push(Some(x)),
+            Err(error) => {
+                failures[j].push(SpeedFailure {
+                    index: k,
+                    speed: speeds[k],
+                    error,
+                });
+                xs.push(None);
+            }
         }
-        counter.tick(jobs.len())?;
     }
-    Ok(jobs
-        .iter()
+    for i in 0..ns {
+        let live: Vec<usize> = (0..jobs.len()).filter(|&j| xs[j].is_some()).collect();
+        if live.is_empty() {
+            break;
+        }
+        let models: Vec<&M> = live.iter().map(|&j| jobs[j].0).collect();
+        let sp: Vec<f64> = live.iter().map(|&j| speeds[index(jobs[j].1, i)]).collect();
+        let starts: Vec<[f64; N]> = live.iter().filter_map(|&j| xs[j]).collect();
+        let recs: Vec<Result<PoincareRecord<N>>> = match M::poincare_many(&models, &sp, &starts, cfg) {
+            Ok(r) => r.into_iter().map(Ok).collect(),
+            Err(Error::Interrupted) => vec![Err(Error::Interrupted); live.len()],
+            Err(_) => (0..live.len())
+                .map(|k| record_speed(models[k], sp[k], &starts[k], cfg))
+                .collect(),
+        };
+        for (k, rec) in recs.into_iter().enumerate() {
+            let j = live[k];
+            let at = index(jobs[j].1, i);
+            match rec.and_then(|r| settle_and_finish(models[k], sp[k], r, cfg)) {
+                Ok((p, xf)) => {
+                    xs[j] = Some(xf);
+                    slots[j][at] = Some(p);
+                }
+                Err(Error::Interrupted) => {
+                    interrupted = true;
+                    xs[j] = None;
+                }
+                Err(error) => {
+                    failures[j].push(SpeedFailure {
+                        index: at,
+                        speed: sp[k],
+                        error,
+                    });
+                    xs[j] = None;
+                }
+            }
+        }
+        if interrupted || counter.tick(live.len()).is_err() {
+            interrupted = true;
+            break;
+        }
+    }
+    jobs.iter()
         .zip(slots)
-        .map(|((_, d), s)| finish(*d, s.into_iter().flatten().collect(), cfg))
-        .collect())
+        .zip(failures)
+        .map(|(((_, d), s), f)| finish_slots(*d, s, f, interrupted, cfg))
+        .collect()
 }
 
-/// One sweep over ascending `speeds`.
+/// One sweep over ascending `speeds`; the first failed speed (in sweep
+/// order) is the error. See [`sweep_partial`] to keep the finished speeds.
 pub fn sweep<const N: usize, M: SweepModel<N>>(
     model: &M,
     speeds: &[f64],
@@ -478,6 +690,20 @@ pub fn sweep<const N: usize, M: SweepModel<N>>(
     cfg: &SweepConfig,
     progress: Progress,
 ) -> Result<SweepResult> {
+    sweep_partial(model, speeds, direction, cfg, progress)?.into_result()
+}
+
+/// One sweep over ascending `speeds`, keeping the finished speeds when a
+/// speed fails or the progress hook stops the work. A continuation sweep
+/// ("up"/"down") stops at its failed speed; an independent sweep runs
+/// every other speed. Errors only for settings checked before any work.
+pub fn sweep_partial<const N: usize, M: SweepModel<N>>(
+    model: &M,
+    speeds: &[f64],
+    direction: SweepDirection,
+    cfg: &SweepConfig,
+    progress: Progress,
+) -> Result<PartialSweep> {
     check_config(cfg)?;
     check_speeds(speeds)?;
     let counter = Counter {
@@ -486,7 +712,7 @@ pub fn sweep<const N: usize, M: SweepModel<N>>(
         cancelled: AtomicBool::new(false),
         progress,
     };
-    sweep_counted(model, speeds, direction, cfg, &counter)
+    Ok(sweep_counted(model, speeds, direction, cfg, &counter))
 }
 
 /// Several independent sweeps `(model, direction)` over the same speeds, in
@@ -500,6 +726,20 @@ pub fn sweep_many<const N: usize, M: SweepModel<N>>(
     cfg: &SweepConfig,
     progress: Progress,
 ) -> Result<Vec<SweepResult>> {
+    sweep_many_partial(jobs, speeds, cfg, progress)?
+        .into_iter()
+        .map(PartialSweep::into_result)
+        .collect()
+}
+
+/// [`sweep_many`] keeping every job's finished speeds (see
+/// [`sweep_partial`]); errors only for settings checked before any work.
+pub fn sweep_many_partial<const N: usize, M: SweepModel<N>>(
+    jobs: &[(&M, SweepDirection)],
+    speeds: &[f64],
+    cfg: &SweepConfig,
+    progress: Progress,
+) -> Result<Vec<PartialSweep>> {
     check_config(cfg)?;
     check_speeds(speeds)?;
     let counter = Counter {
@@ -518,7 +758,7 @@ pub fn sweep_many<const N: usize, M: SweepModel<N>>(
     let group = cont.len().div_ceil(threads).clamp(1, LANES);
     let groups: Vec<Vec<usize>> = cont.chunks(group).map(|c| c.to_vec()).collect();
     let (cont_res, indep_res) = rayon::join(
-        || -> Result<Vec<Vec<SweepResult>>> {
+        || -> Vec<Vec<PartialSweep>> {
             groups
                 .par_iter()
                 .map(|g| {
@@ -527,20 +767,20 @@ pub fn sweep_many<const N: usize, M: SweepModel<N>>(
                 })
                 .collect()
         },
-        || -> Result<Vec<SweepResult>> {
+        || -> Vec<PartialSweep> {
             indep
                 .par_iter()
                 .map(|&j| sweep_counted(jobs[j].0, speeds, jobs[j].1, cfg, &counter))
                 .collect()
         },
     );
-    let mut out: Vec<Option<SweepResult>> = vec![None; jobs.len()];
-    for (g, rs) in groups.iter().zip(cont_res?) {
+    let mut out: Vec<Option<PartialSweep>> = vec![None; jobs.len()];
+    for (g, rs) in groups.iter().zip(cont_res) {
         for (&j, r) in g.iter().zip(rs) {
             out[j] = Some(r);
         }
     }
-    for (&j, r) in indep.iter().zip(indep_res?) {
+    for (&j, r) in indep.iter().zip(indep_res) {
         out[j] = Some(r);
     }
     Ok(out.into_iter().flatten().collect())
@@ -725,8 +965,50 @@ pub struct RegimeCell {
     pub settled: bool,
 }
 
+/// A regime-map cell whose run failed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CellFailure {
+    /// Index of the cell in map order (error scale x torque x speed, speed fastest).
+    pub index: usize,
+    /// Input torque (N m).
+    pub input_torque_n_m: f64,
+    /// Transmission-error scale factor (-).
+    pub error_scale: f64,
+    /// Speed (rpm).
+    pub speed_rpm: f64,
+    /// Why it failed.
+    pub error: Error,
+}
+
+/// What a regime map finished, and which cells failed or were never run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PartialRegimeMap {
+    /// The finished cells, in map order.
+    pub cells: Vec<RegimeCell>,
+    /// Failed cells, in map order.
+    pub failures: Vec<CellFailure>,
+    /// Map-order indices of the cells never run (the work was stopped).
+    pub not_run: Vec<usize>,
+    /// The progress hook stopped the work before every cell ran.
+    pub interrupted: bool,
+}
+
+impl PartialRegimeMap {
+    /// The complete map, or the first failure (then `Error::Interrupted`).
+    pub fn into_result(self) -> Result<Vec<RegimeCell>> {
+        if let Some(f) = self.failures.into_iter().next() {
+            return Err(f.error);
+        }
+        if self.interrupted {
+            return Err(Error::Interrupted);
+        }
+        Ok(self.cells)
+    }
+}
+
 /// Regime map over error scale x torque x speed (speed fastest), every cell
-/// started from its static state (independent), in parallel.
+/// started from its static state (independent), in parallel; the first
+/// failed cell is the error (see [`regime_map_partial`]).
 pub fn regime_map(
     base: &HelicalSweep,
     torques_n_m: &[f64],
@@ -735,6 +1017,20 @@ pub fn regime_map(
     cfg: &SweepConfig,
     progress: Progress,
 ) -> Result<Vec<RegimeCell>> {
+    regime_map_partial(base, torques_n_m, error_scales, speeds_rpm, cfg, progress)?.into_result()
+}
+
+/// [`regime_map`] keeping the finished cells: a failed cell is reported and
+/// every other cell still runs; a stop keeps the cells finished so far.
+/// Errors only for settings checked before any work.
+pub fn regime_map_partial(
+    base: &HelicalSweep,
+    torques_n_m: &[f64],
+    error_scales: &[f64],
+    speeds_rpm: &[f64],
+    cfg: &SweepConfig,
+    progress: Progress,
+) -> Result<PartialRegimeMap> {
     check_config(cfg)?;
     check_speeds(speeds_rpm)?;
     if torques_n_m.is_empty() || error_scales.is_empty() {
@@ -767,47 +1063,69 @@ pub fn regime_map(
         cancelled: AtomicBool::new(false),
         progress,
     };
-    let mut out = Vec::with_capacity(cells.len());
-    for chunk in cells.chunks(CHUNK) {
-        let part: Result<Vec<Vec<RegimeCell>>> = chunk
+    let mut slots: Vec<Option<RegimeCell>> = vec![None; cells.len()];
+    let mut failures = Vec::new();
+    let mut interrupted = false;
+    let all: Vec<usize> = (0..cells.len()).collect();
+    for chunk in all.chunks(CHUNK) {
+        let part: Vec<Vec<(usize, Result<SpeedPoint>)>> = chunk
             .par_chunks(LANES)
             .map(|group| {
-                let ms: Vec<&HelicalSweep> = group.iter().map(|&(m, _)| &models[m].2).collect();
-                let sp: Vec<f64> = group.iter().map(|&(_, s)| speeds_rpm[s]).collect();
-                let starts = ms
+                if counter.keep_going().is_err() {
+                    return Vec::new();
+                }
+                let runs: Vec<(&HelicalSweep, f64)> = group
                     .iter()
-                    .zip(&sp)
-                    .map(|(m, &s)| m.initial_state(s))
-                    .collect::<Result<Vec<_>>>()?;
-                let recs = HelicalSweep::poincare_many(&ms, &sp, &starts, cfg)?;
-                group
-                    .iter()
-                    .zip(recs)
-                    .map(|(&(m, s), rec)| {
-                        let (t, e, model) = &models[m];
-                        let p = finish_point(model, speeds_rpm[s], rec, cfg)?;
-                        Ok(RegimeCell {
-                            input_torque_n_m: *t,
-                            error_scale: *e,
-                            speed_rpm: p.speed,
-                            motion: p.motion,
-                            impact: p.impact,
-                            amplitude_m: p.amplitude(),
-                            mean_deflection_m: 0.5 * (p.deflection_max + p.deflection_min),
-                            lyapunov_per_period: p.lyapunov_per_period,
-                            lyapunov_stderr_per_period: p.lyapunov_stderr_per_period,
-                            zero_one_k: p.zero_one_k,
-                            transient_periods: p.transient_periods,
-                            settled: p.settled,
-                        })
-                    })
-                    .collect()
+                    .map(|&c| (&models[cells[c].0].2, speeds_rpm[cells[c].1]))
+                    .collect();
+                group.iter().copied().zip(independent_points(&runs, cfg)).collect()
             })
             .collect();
-        out.extend(part?.into_iter().flatten());
-        counter.tick(chunk.len())?;
+        for (c, r) in part.into_iter().flatten() {
+            let (t, e, _) = &models[cells[c].0];
+            match r {
+                Ok(p) => {
+                    slots[c] = Some(RegimeCell {
+                        input_torque_n_m: *t,
+                        error_scale: *e,
+                        speed_rpm: p.speed,
+                        motion: p.motion,
+                        impact: p.impact,
+                        amplitude_m: p.amplitude(),
+                        mean_deflection_m: 0.5 * (p.deflection_max + p.deflection_min),
+                        lyapunov_per_period: p.lyapunov_per_period,
+                        lyapunov_stderr_per_period: p.lyapunov_stderr_per_period,
+                        zero_one_k: p.zero_one_k,
+                        transient_periods: p.transient_periods,
+                        settled: p.settled,
+                    })
+                }
+                Err(Error::Interrupted) => interrupted = true,
+                Err(error) => failures.push(CellFailure {
+                    index: c,
+                    input_torque_n_m: *t,
+                    error_scale: *e,
+                    speed_rpm: speeds_rpm[cells[c].1],
+                    error,
+                }),
+            }
+        }
+        if interrupted || counter.tick(chunk.len()).is_err() {
+            interrupted = true;
+            break;
+        }
     }
-    Ok(out)
+    failures.sort_by_key(|f| f.index);
+    let failed: Vec<usize> = failures.iter().map(|f| f.index).collect();
+    let not_run: Vec<usize> = (0..cells.len())
+        .filter(|&c| slots[c].is_none() && !failed.contains(&c))
+        .collect();
+    Ok(PartialRegimeMap {
+        cells: slots.into_iter().flatten().collect(),
+        failures,
+        interrupted: interrupted && !not_run.is_empty(),
+        not_run,
+    })
 }
 
 #[cfg(test)]

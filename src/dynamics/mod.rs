@@ -17,7 +17,8 @@ pub mod seed;
 pub(crate) mod simd;
 
 pub use bifurcation::{
-    regime_map, sweep, sweep_many, BearingSchedule, HelicalSweep, RegimeCell, SpeedPoint, SweepConfig, SweepDirection,
+    regime_map, regime_map_partial, sweep, sweep_many, sweep_many_partial, sweep_partial, BearingSchedule, CellFailure,
+    HelicalSweep, PartialRegimeMap, PartialSweep, RegimeCell, SpeedFailure, SpeedPoint, SweepConfig, SweepDirection,
     SweepModel, SweepResult,
 };
 pub use classify::{ChaosEvidence, ClassifyConfig, ImpactRegime, Motion, SectionVerdict, Transition};

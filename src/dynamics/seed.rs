@@ -139,7 +139,7 @@ pub fn bearing_schedule(
     match case {
         BearingCase::Constant => {
             let s = model.solve_static(&[radial_n, 0.0, axial_n, 0.0, 0.0], &opts)?;
-            BearingSchedule::constant(n * s.radial_stiffness_n_per_m, n * s.axial_stiffness_n_per_m)
+            BearingSchedule::constant(n * s.radial_stiffness_seed_n_per_m, n * s.axial_stiffness_seed_n_per_m)
         }
         BearingCase::Speed => {
             if speeds_rpm.is_empty() {
@@ -154,8 +154,8 @@ pub fn bearing_schedule(
                     .map(|p| {
                         (
                             p.speed_rpm,
-                            n * p.radial_stiffness_n_per_m,
-                            n * p.axial_stiffness_n_per_m,
+                            n * p.radial_stiffness_seed_n_per_m,
+                            n * p.axial_stiffness_seed_n_per_m,
                         )
                     })
                     .collect(),

@@ -1,6 +1,6 @@
 //! Batch entry points: many operating points in one call, rayon inside,
-//! the GIL released, Ctrl-C checked every 50 ms while the threads work, one
-//! row per point.
+//! the GIL released, Ctrl-C and the progress callback checked every 20 ms
+//! while the threads work (see `parallel.rs`), one row per point.
 //!
 //! A point that fails (bad input, no convergence, thermal runaway) does not
 //! raise: its row carries `ok = False`, the Python exception name in
@@ -10,10 +10,10 @@
 use numpy::{IntoPyArray, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use rayon::prelude::*;
 
 use super::bearing::PyBearing;
 use super::errors::IntoPy;
+use super::parallel::map_interruptible;
 use super::solve::{load_vector, solve_options, tilt_option};
 use crate::bearing::batch::{solve_point, OperatingPoint, PointSummary};
 use crate::bearing::BearingModel;
@@ -29,114 +29,6 @@ pub fn error_kind(e: &Error) -> &'static str {
         Error::Data(_) => "DataError",
         Error::Interrupted => "KeyboardInterrupt",
     }
-}
-
-/// A rayon pool of `threads` threads, or None for the global pool.
-fn pool(threads: Option<usize>) -> PyResult<Option<rayon::ThreadPool>> {
-    match threads {
-        None => Ok(None),
-        Some(0) => Err(Error::config(
-            "threads",
-            0,
-            "must be at least 1 (or None for all cores)",
-        ))
-        .py_err(),
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build()
-            .map(Some)
-            .map_err(|e| Error::config("threads", n, format!("cannot start a thread pool: {e}")))
-            .py_err(),
-    }
-}
-
-/// How often the caller's thread looks for Ctrl-C and reports progress
-/// while the workers run.
-const POLL: std::time::Duration = std::time::Duration::from_millis(50);
-
-/// Map `f` over `items` in parallel in a pool of `threads` threads (None:
-/// the global pool), the GIL released. The work runs as one parallel
-/// iteration (no barrier between parts of it, which on a loaded machine
-/// would leave threads waiting for a descheduled one); meanwhile the
-/// calling thread checks for Ctrl-C every 50 ms (KeyboardInterrupt: the
-/// items not started are skipped) and reports `progress(done, total)`.
-/// Every item is computed on its own, so results do not depend on the
-/// thread count.
-pub fn map_interruptible<T, R, F>(
-    py: Python<'_>,
-    items: &[T],
-    threads: Option<usize>,
-    progress: Option<&Bound<'_, PyAny>>,
-    f: F,
-) -> PyResult<Vec<R>>
-where
-    T: Sync,
-    R: Send,
-    F: Fn(&T) -> R + Sync + Send,
-{
-    use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-    use std::sync::mpsc::RecvTimeoutError;
-
-    let pool = pool(threads)?;
-    let done = AtomicUsize::new(0);
-    let stop = AtomicBool::new(false);
-    let (tx, rx) = std::sync::mpsc::channel::<Vec<Option<R>>>();
-    let run = || -> Vec<Option<R>> {
-        items
-            .par_iter()
-            .map(|x| {
-                if stop.load(Ordering::Relaxed) {
-                    return None;
-                }
-                let r = f(x);
-                done.fetch_add(1, Ordering::Relaxed);
-                Some(r)
-            })
-            .collect()
-    };
-    std::thread::scope(|scope| -> PyResult<Vec<R>> {
-        scope.spawn(|| {
-            let res = match &pool {
-                Some(p) => p.install(run),
-                None => run(),
-            };
-            // The receiver outlives this thread (joined at the end of the scope).
-            let _ = tx.send(res);
-        });
-        let rx = std::sync::Mutex::new(rx);
-        let mut interrupt = None;
-        loop {
-            let got = py.detach(|| match rx.lock() {
-                Ok(r) => r.recv_timeout(POLL),
-                Err(_) => Err(RecvTimeoutError::Disconnected),
-            });
-            match got {
-                Ok(res) => {
-                    if let Some(e) = interrupt {
-                        return Err(e);
-                    }
-                    py.check_signals()?;
-                    if let Some(cb) = progress {
-                        cb.call1((items.len(), items.len()))?;
-                    }
-                    return Ok(res.into_iter().flatten().collect()); // no interrupt: every item ran
-                }
-                // The worker thread panicked: the scope re-raises its panic.
-                Err(RecvTimeoutError::Disconnected) => return Ok(Vec::new()),
-                Err(RecvTimeoutError::Timeout) => {}
-            }
-            if interrupt.is_none() {
-                let checked = py.check_signals().and_then(|_| match progress {
-                    Some(cb) => cb.call1((done.load(Ordering::Relaxed), items.len())).map(|_| ()),
-                    None => Ok(()),
-                });
-                if let Err(e) = checked {
-                    stop.store(true, Ordering::Relaxed);
-                    interrupt = Some(e);
-                }
-            }
-        }
-    })
 }
 
 /// One contiguous f64 column per name, read from numpy arrays of one length.
@@ -189,11 +81,11 @@ fn summary_columns(d: &Bound<'_, PyDict>, rows: &[Option<&PointSummary>]) -> PyR
     let col = |f: &dyn Fn(&PointSummary) -> f64| -> Vec<f64> { rows.iter().map(|r| r.map_or(f64::NAN, f)).collect() };
     let deg = |r: f64| r.to_degrees();
     let set = |key: &str, v: Vec<f64>| d.set_item(key, v.into_pyarray(py));
-    set("axial_stiffness_n_per_m", col(&|s| s.axial_stiffness_n_per_m))?;
-    set("radial_stiffness_n_per_m", col(&|s| s.radial_stiffness_n_per_m))?;
-    set("k_xx_n_per_m", col(&|s| s.stiffness_diagonal_si[0]))?;
-    set("k_zz_n_per_m", col(&|s| s.stiffness_diagonal_si[2]))?;
-    set("k_ryry_nm_per_rad", col(&|s| s.stiffness_diagonal_si[4]))?;
+    set("axial_stiffness_n_per_m", col(&|s| s.axial_stiffness_seed_n_per_m))?;
+    set("radial_stiffness_n_per_m", col(&|s| s.radial_stiffness_seed_n_per_m))?;
+    set("k_xx_n_per_m", col(&|s| s.stiffness_diagonal[0]))?;
+    set("k_zz_n_per_m", col(&|s| s.stiffness_diagonal[2]))?;
+    set("k_ryry_nm_per_rad", col(&|s| s.stiffness_diagonal[4]))?;
     set("axial_displacement_um", col(&|s| s.axial_displacement_m * 1e6))?;
     set("radial_displacement_um", col(&|s| s.radial_displacement_m * 1e6))?;
     set("tilt_rad", col(&|s| s.tilt_rad))?;
@@ -234,14 +126,14 @@ fn summary_columns(d: &Bound<'_, PyDict>, rows: &[Option<&PointSummary>]) -> PyR
 /// Solve many operating points of one bearing (see `Bearing.solve_many`):
 /// arrays of one length, options shared; one row per point.
 #[pyfunction]
-#[pyo3(signature = (bearing, axial_n, radial_n, moment_nmm, speed_rpm, effects=None, raceway_control="outer", misalignment_rad=Some(0.0), threads=None, progress=None))]
+#[pyo3(signature = (bearing, axial_n, radial_n, moment_n_m, speed_rpm, effects=None, raceway_control="outer", misalignment_rad=Some(0.0), threads=None, progress=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn solve_many<'py>(
     py: Python<'py>,
     bearing: &PyBearing,
     axial_n: PyReadonlyArray1<'py, f64>,
     radial_n: PyReadonlyArray1<'py, f64>,
-    moment_nmm: PyReadonlyArray1<'py, f64>,
+    moment_n_m: PyReadonlyArray1<'py, f64>,
     speed_rpm: PyReadonlyArray1<'py, f64>,
     effects: Option<Vec<String>>,
     raceway_control: &str,
@@ -252,7 +144,7 @@ pub fn solve_many<'py>(
     let [fa, fr, m, n] = columns([
         ("axial_n", &axial_n),
         ("radial_n", &radial_n),
-        ("moment_nmm", &moment_nmm),
+        ("moment_n_m", &moment_n_m),
         ("speed_rpm", &speed_rpm),
     ])?;
     let base = solve_options(effects, raceway_control).py_err()?;
@@ -260,7 +152,7 @@ pub fn solve_many<'py>(
     let points: Vec<Result<OperatingPoint>> = (0..fa.len())
         .map(|i| {
             Ok(OperatingPoint {
-                load_n_nm: load_vector(fa[i], fr[i], m[i])?,
+                load: load_vector(fa[i], fr[i], m[i])?,
                 speed_rpm: n[i],
                 options: crate::bearing::SolveOptions {
                     tilt: tilt_option(misalignment_rad, m[i])?,

@@ -317,14 +317,14 @@ impl PyBearing {
     }
 
     /// Solve one operating point; see `thermobear.Bearing.solve`.
-    #[pyo3(signature = (axial_n, radial_n, moment_nmm, speed_rpm, effects=None, raceway_control="outer", misalignment_rad=Some(0.0)))]
+    #[pyo3(signature = (axial_n, radial_n, moment_n_m, speed_rpm, effects=None, raceway_control="outer", misalignment_rad=Some(0.0)))]
     #[allow(clippy::too_many_arguments)]
     fn solve<'py>(
         &self,
         py: Python<'py>,
         axial_n: f64,
         radial_n: f64,
-        moment_nmm: f64,
+        moment_n_m: f64,
         speed_rpm: f64,
         effects: Option<Vec<String>>,
         raceway_control: &str,
@@ -335,7 +335,7 @@ impl PyBearing {
             &self.inner,
             axial_n,
             radial_n,
-            moment_nmm,
+            moment_n_m,
             speed_rpm,
             effects,
             raceway_control,

@@ -4,11 +4,13 @@
 //! ├── ConfigError        (also raised for bad arguments; names field and value)
 //! ├── ConvergenceError   (solver residual and iterations in the message)
 //! │   └── ThermalRunawayError
-//! └── DataError          (measured data that cannot be used)
-//! `Error::Interrupted` becomes KeyboardInterrupt.
+//! ├── DataError          (measured data that cannot be used)
+//! └── Interrupted        (a progress callback returned False)
+//! ThreadsWarning (a RuntimeWarning): a `threads` above the cores, capped.
+//! `Error::Interrupted` (Ctrl-C seen by the core) becomes KeyboardInterrupt.
 
 use pyo3::create_exception;
-use pyo3::exceptions::{PyException, PyKeyboardInterrupt};
+use pyo3::exceptions::{PyException, PyKeyboardInterrupt, PyRuntimeWarning};
 use pyo3::prelude::*;
 
 use crate::error::Error;
@@ -43,6 +45,18 @@ create_exception!(
     ThermobearError,
     "Measured data that cannot be used."
 );
+create_exception!(
+    thermobear,
+    Interrupted,
+    ThermobearError,
+    "Long work stopped because its progress callback returned False; `done` and `total` say how far it got."
+);
+create_exception!(
+    thermobear,
+    ThreadsWarning,
+    PyRuntimeWarning,
+    "A `threads` argument above the number of available cores, capped to it."
+);
 
 /// Convert a core error into the matching Python exception.
 pub fn to_py(err: Error) -> PyErr {
@@ -53,6 +67,46 @@ pub fn to_py(err: Error) -> PyErr {
         Error::ThermalRunaway(_) => ThermalRunawayError::new_err(msg),
         Error::Data(_) => DataError::new_err(msg),
         Error::Interrupted => PyKeyboardInterrupt::new_err(msg),
+    }
+}
+
+/// Split per-speed results into the finished items (with their indices)
+/// and the failures `(index, error)`.
+pub fn split_results<T>(results: Vec<crate::Result<T>>) -> (Vec<T>, Vec<usize>, Vec<(usize, Error)>) {
+    let (mut done, mut index, mut failed) = (Vec::new(), Vec::new(), Vec::new());
+    for (i, r) in results.into_iter().enumerate() {
+        match r {
+            Ok(t) => {
+                done.push(t);
+                index.push(i);
+            }
+            Err(e) => failed.push((i, e)),
+        }
+    }
+    (done, index, failed)
+}
+
+/// The exception of the first failed speed, carrying the finished rows:
+/// `_sweep_partial` (their columns), `_sweep_finished_index` (their
+/// indices in `speeds`) and `_sweep_failed` (`(speed, message)` of every
+/// failure). The Python layer turns them into `partial` and `failed` frames.
+pub fn partial_error(
+    py: Python<'_>,
+    speeds: &[f64],
+    columns: Bound<'_, PyAny>,
+    finished: Vec<usize>,
+    failed: &[(usize, Error)],
+) -> PyErr {
+    let err = to_py(failed.first().map_or(Error::Interrupted, |f| f.1.clone()));
+    let rows: Vec<(f64, String)> = failed.iter().map(|(i, e)| (speeds[*i], e.to_string())).collect();
+    let v = err.value(py);
+    let attached = v
+        .setattr("_sweep_partial", columns)
+        .and_then(|_| v.setattr("_sweep_finished_index", finished))
+        .and_then(|_| v.setattr("_sweep_failed", rows));
+    match attached {
+        Ok(()) => err,
+        Err(e) => e,
     }
 }
 
@@ -74,5 +128,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("ConvergenceError", py.get_type::<ConvergenceError>())?;
     m.add("ThermalRunawayError", py.get_type::<ThermalRunawayError>())?;
     m.add("DataError", py.get_type::<DataError>())?;
+    m.add("Interrupted", py.get_type::<Interrupted>())?;
+    m.add("ThreadsWarning", py.get_type::<ThreadsWarning>())?;
     Ok(())
 }

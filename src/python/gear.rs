@@ -4,7 +4,8 @@
 //!
 //! Long work runs on a worker thread with the GIL released; the calling
 //! thread wakes every [`WATCH_MS`] ms, checks for Ctrl-C
-//! (`Python::check_signals`) and forwards progress to the Python callback.
+//! (`Python::check_signals`) and forwards progress to the Python callback
+//! (a callback that returns False stops the work: `thermobear.Interrupted`).
 //! The engine's progress hook only reads an atomic "cancel" flag, so it
 //! never touches Python.
 
@@ -27,8 +28,8 @@ use crate::dynamics::seed::{
     bearing_schedule, helical_params_from_tables, seed_bearing_loads, BearingCase, GearSystemDefaults, MeshTables,
 };
 use crate::dynamics::{
-    regime_map as engine_regime_map, sweep, sweep_many, BearingSchedule, HelicalPair, HelicalSweep, ImpactRegime,
-    MeshDamping, Motion, SweepConfig, SweepDirection, SweepResult,
+    regime_map_partial, sweep_many_partial, sweep_partial, BearingSchedule, HelicalPair, HelicalSweep, ImpactRegime,
+    MeshDamping, Motion, PartialRegimeMap, PartialSweep, RegimeCell, SweepConfig, SweepDirection, SweepResult,
 };
 use crate::error::{finite, positive, Error, Result};
 use crate::gear::{
@@ -73,7 +74,7 @@ where
             let d = done.load(Ordering::Relaxed);
             if let (Some(cb), true) = (progress, d != reported) {
                 reported = d;
-                if let Err(e) = cb.call1((d, total.load(Ordering::Relaxed))) {
+                if let Err(e) = super::parallel::report(cb, d, total.load(Ordering::Relaxed)) {
                     cancel.store(true, Ordering::Relaxed);
                     pending = Some(e);
                 }
@@ -88,7 +89,7 @@ where
         let out = out.py_err()?;
         let d = done.load(Ordering::Relaxed);
         if let (Some(cb), true) = (progress, d != reported) {
-            cb.call1((d, total.load(Ordering::Relaxed)))?;
+            super::parallel::report(cb, d, total.load(Ordering::Relaxed))?;
         }
         Ok(out)
     })
@@ -952,6 +953,70 @@ fn sweep_dict<'py>(py: Python<'py>, r: &SweepResult, pinion_teeth: u32) -> PyRes
     Ok(d)
 }
 
+/// Run `work` like [`run_watched`] but keep its (partial) outcome: returns
+/// the outcome and the stop (Ctrl-C or the callback), if any.
+fn run_keeping<P, W>(py: Python<'_>, progress: Option<&Bound<'_, PyAny>>, work: W) -> PyResult<(P, Option<PyErr>)>
+where
+    P: Send,
+    W: FnOnce(&(dyn Fn(usize, usize) -> bool + Sync)) -> Result<P> + Send,
+{
+    let slot = std::sync::Mutex::new(None);
+    let run = run_watched(py, progress, |hook| {
+        let p = work(hook)?;
+        if let Ok(mut s) = slot.lock() {
+            *s = Some(p);
+        }
+        Ok(())
+    });
+    match (run, slot.into_inner().ok().flatten()) {
+        (Err(e), None) => Err(e),
+        (Ok(()), None) => Err(PyRuntimeError::new_err("the gear dynamics worker returned no result")),
+        (run, Some(p)) => Ok((p, run.err())),
+    }
+}
+
+/// The complete sweeps, or the error to raise -- the stop, else the first
+/// failed speed (as its own exception class) -- carrying what finished:
+/// `_sweep_partial` (one sweep dict per job), `_sweep_failed`
+/// (`(job, speed_rpm, message)`) and `_sweep_not_run` (`(job, speed_rpm)`).
+/// The Python layer turns them into the `partial`, `failed` and `not_run`
+/// frames.
+fn sweep_results(
+    py: Python<'_>,
+    parts: Vec<PartialSweep>,
+    stop: Option<PyErr>,
+    speeds: &[f64],
+    teeth: &[u32],
+) -> PyResult<Vec<SweepResult>> {
+    if stop.is_none() && parts.iter().all(PartialSweep::is_complete) {
+        return Ok(parts.into_iter().map(|p| p.result).collect());
+    }
+    let err = stop.unwrap_or_else(|| {
+        let first = parts.iter().find_map(|p| p.failures.first());
+        super::errors::to_py(first.map_or(Error::Interrupted, |f| f.error.clone()))
+    });
+    let dicts = parts
+        .iter()
+        .zip(teeth)
+        .map(|(p, &z)| sweep_dict(py, &p.result, z))
+        .collect::<PyResult<Vec<_>>>()?;
+    let failed: Vec<(usize, f64, String)> = parts
+        .iter()
+        .enumerate()
+        .flat_map(|(j, p)| p.failures.iter().map(move |f| (j, f.speed, f.error.to_string())))
+        .collect();
+    let not_run: Vec<(usize, f64)> = parts
+        .iter()
+        .enumerate()
+        .flat_map(|(j, p)| p.not_run.iter().map(move |&i| (j, speeds[i])))
+        .collect();
+    let v = err.value(py);
+    v.setattr("_sweep_partial", dicts)?;
+    v.setattr("_sweep_failed", failed)?;
+    v.setattr("_sweep_not_run", not_run)?;
+    Err(err)
+}
+
 /// One speed sweep of a gear system: per-speed columns plus the flat
 /// Poincare samples (`poincare_count` per speed).
 #[pyfunction]
@@ -979,8 +1044,12 @@ pub fn bifurcation<'py>(
         settings.as_ref(),
     )?;
     let model = &system.sweep;
-    let r = run_watched(py, progress.as_ref(), |hook| sweep(model, &speeds, dir, &cfg, hook))?;
-    sweep_dict(py, &r, model.pair.params().pinion_teeth)
+    let teeth = model.pair.params().pinion_teeth;
+    let (parts, stop) = run_keeping(py, progress.as_ref(), |hook| {
+        Ok(vec![sweep_partial(model, &speeds, dir, &cfg, hook)?])
+    })?;
+    let r = sweep_results(py, parts, stop, &speeds, &[teeth])?;
+    sweep_dict(py, &r[0], teeth)
 }
 
 /// Several sweeps over the same speeds in parallel (lock-step batches);
@@ -1022,7 +1091,11 @@ pub fn bifurcation_many<'py>(
         .map(|(s, d)| Ok((&s.sweep, direction_of(d)?)))
         .collect::<Result<_>>()
         .py_err()?;
-    let rs = run_watched(py, progress.as_ref(), |hook| sweep_many(&jobs, &speeds, &cfg, hook))?;
+    let teeth: Vec<u32> = systems.iter().map(|s| s.sweep.pair.params().pinion_teeth).collect();
+    let (parts, stop) = run_keeping(py, progress.as_ref(), |hook| {
+        sweep_many_partial(&jobs, &speeds, &cfg, hook)
+    })?;
+    let rs = sweep_results(py, parts, stop, &speeds, &teeth)?;
     rs.iter()
         .zip(&systems)
         .map(|(r, s)| sweep_dict(py, r, s.sweep.pair.params().pinion_teeth))
@@ -1063,9 +1136,39 @@ pub fn regime_map<'py>(
         settings.as_ref(),
     )?;
     let model = &system.sweep;
-    let cells = run_watched(py, progress.as_ref(), |hook| {
-        engine_regime_map(model, &torques_nm, &te_scales, &speeds, &cfg, hook)
+    let z = model.pair.params().pinion_teeth;
+    let (map, stop): (PartialRegimeMap, _) = run_keeping(py, progress.as_ref(), |hook| {
+        regime_map_partial(model, &torques_nm, &te_scales, &speeds, &cfg, hook)
     })?;
+    if stop.is_none() && map.failures.is_empty() && !map.interrupted {
+        return regime_dict(py, &map.cells, z);
+    }
+    // The error to raise (the stop, else the first failed cell) carries the
+    // finished cells (`_map_partial`), the failed ones (`_map_failed`:
+    // `(torque_nm, te_scale, speed_rpm, message)`) and those never run
+    // (`_map_not_run`: `(torque_nm, te_scale, speed_rpm)`).
+    let err = stop
+        .unwrap_or_else(|| super::errors::to_py(map.failures.first().map_or(Error::Interrupted, |f| f.error.clone())));
+    let (nt, ns) = (torques_nm.len(), speeds.len());
+    let failed: Vec<(f64, f64, f64, String)> = map
+        .failures
+        .iter()
+        .map(|f| (f.input_torque_n_m, f.error_scale, f.speed_rpm, f.error.to_string()))
+        .collect();
+    let not_run: Vec<(f64, f64, f64)> = map
+        .not_run
+        .iter()
+        .map(|&c| (torques_nm[(c / ns) % nt], te_scales[c / ns / nt], speeds[c % ns]))
+        .collect();
+    let v = err.value(py);
+    v.setattr("_map_partial", regime_dict(py, &map.cells, z)?)?;
+    v.setattr("_map_failed", failed)?;
+    v.setattr("_map_not_run", not_run)?;
+    Err(err)
+}
+
+/// The regime map's columns, one row per cell in map order.
+fn regime_dict<'py>(py: Python<'py>, cells: &[RegimeCell], z: u32) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     let col = |f: &dyn Fn(&crate::dynamics::RegimeCell) -> f64| -> Vec<f64> { cells.iter().map(f).collect() };
     d.set_item("torque_nm", col(&|c| c.input_torque_n_m).into_pyarray(py))?;
@@ -1083,7 +1186,6 @@ pub fn regime_map<'py>(
     )?;
     d.set_item("amplitude_um", col(&|c| c.amplitude_m * 1e6).into_pyarray(py))?;
     d.set_item("mean_dte_um", col(&|c| c.mean_deflection_m * 1e6).into_pyarray(py))?;
-    let z = model.pair.params().pinion_teeth;
     let opt =
         |f: &dyn Fn(&crate::dynamics::RegimeCell) -> Option<f64>| -> Vec<Option<f64>> { cells.iter().map(f).collect() };
     d.set_item("lyapunov_per_mesh_period", opt(&|c| c.lyapunov_per_period))?;

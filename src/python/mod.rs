@@ -5,6 +5,7 @@ use pyo3::prelude::*;
 
 pub mod batch;
 pub mod bearing;
+pub mod defaults;
 pub mod errors;
 pub mod gear;
 pub mod parallel;
@@ -19,12 +20,14 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
     bearing::register(m)?;
     solve::register(m)?;
+    defaults::register(m)?;
     batch::register(m)?;
     gear::register(m)?;
     rotor::register(m)?;
     spindle::register(m)?;
     thermal::register(m)?;
     persist::register(m)?;
+    parallel::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

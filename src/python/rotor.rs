@@ -1,6 +1,6 @@
 //! Bindings for the spindle rotor dynamics (src/rotor/spindle_vibration.rs):
 //! Campbell diagram, critical speeds, vibration velocity against speed and
-//! the spectrum at one speed. Sweeps run through `chunked_map` (GIL
+//! the spectrum at one speed. Sweeps run through `map_interruptible` (GIL
 //! released, Ctrl-C, progress); results are dicts of numpy columns.
 
 use numpy::{IntoPyArray, PyReadonlyArray1};
@@ -8,7 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::errors::IntoPy;
-use super::parallel::{chunked_map, default_chunk};
+use super::parallel::{map_interruptible, watched};
 use crate::bearing::RacewayOffsets;
 use crate::effects::{Effect, EffectSet};
 use crate::error::{finite, Error, Result};
@@ -148,7 +148,7 @@ fn rotor_campbell<'py>(
     }
     let off = offsets_arg(offsets)?;
     let s = py.detach(|| build(row_material, preload_n, effects, off)).py_err()?;
-    let pts = chunked_map(py, &sp, default_chunk(sp.len()), progress, |&n| s.campbell(&[n], modes))?;
+    let pts = map_interruptible(py, &sp, None, progress, |&n| s.campbell(&[n], modes))?;
     let (mut speed, mut mode, mut freq, mut zeta, mut whirl) = (vec![], vec![], vec![], vec![], vec![]);
     for p in pts {
         let p = p.py_err()?;
@@ -252,20 +252,14 @@ fn rotor_vibration<'py>(
     let off = offsets_arg(offsets)?;
     let s = py.detach(|| build(row_material, preload_n, effects, off)).py_err()?;
     let u = s.unbalance(spec).py_err()?;
-    let pts = chunked_map(
-        py,
-        &sp,
-        default_chunk(sp.len()),
-        progress,
-        |&n| -> Result<VibrationPoint> {
-            if time {
-                Ok(s.time_vibration(n, duration_s, 0.0, &u, true)?.point)
-            } else {
-                Ok(s.steady_vibration(&[n], &u)?[0])
-            }
-        },
-    )?;
-    let pts = pts.into_iter().collect::<Result<Vec<_>>>().py_err()?;
+    let pts = map_interruptible(py, &sp, None, progress, |&n| -> Result<VibrationPoint> {
+        if time {
+            Ok(s.time_vibration(n, duration_s, 0.0, &u, true)?.point)
+        } else {
+            Ok(s.steady_vibration(&[n], &u)?[0])
+        }
+    })?;
+    let (pts, finished, failed) = super::errors::split_results(pts);
     let col = |f: &dyn Fn(&VibrationPoint) -> f64| pts.iter().map(f).collect::<Vec<_>>();
     let d = PyDict::new(py);
     d.set_item("speed_rpm", col(&|p| p.speed_rpm).into_pyarray(py))?;
@@ -275,6 +269,9 @@ fn rotor_vibration<'py>(
     d.set_item("x2_mm_s", col(&|p| p.harmonics_mm_s[1]).into_pyarray(py))?;
     d.set_item("x3_mm_s", col(&|p| p.harmonics_mm_s[2]).into_pyarray(py))?;
     d.set_item("unbalance_g_mm", u.unbalance_kg_m * 1e6)?;
+    if !failed.is_empty() {
+        return Err(super::errors::partial_error(py, &sp, d.into_any(), finished, &failed));
+    }
     Ok(d)
 }
 
@@ -296,15 +293,14 @@ fn rotor_spectrum<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let spec = unbalance_spec(unbalance_grade, unbalance_g_mm).py_err()?;
     let off = offsets_arg(offsets)?;
-    let (t, f, a, u) = py
-        .detach(|| -> Result<_> {
-            let s = build(row_material, preload_n, effects, off)?;
-            let u = s.unbalance(spec)?;
-            let t = s.time_vibration(speed_rpm, duration_s, 0.0, &u, nonlinear)?;
-            let (f, a) = s.spectrum(&t)?;
-            Ok((t, f, a, u))
-        })
-        .py_err()?;
+    let (t, f, a, u) = watched(py, 1, None, |_, _| -> Result<_> {
+        let s = build(row_material, preload_n, effects, off)?;
+        let u = s.unbalance(spec)?;
+        let t = s.time_vibration(speed_rpm, duration_s, 0.0, &u, nonlinear)?;
+        let (f, a) = s.spectrum(&t)?;
+        Ok((t, f, a, u))
+    })?
+    .py_err()?;
     let d = PyDict::new(py);
     d.set_item("frequency_hz", f.into_pyarray(py))?;
     d.set_item("velocity_mm_s", a.into_pyarray(py))?;

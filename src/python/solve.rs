@@ -7,7 +7,7 @@ use pyo3::types::PyDict;
 
 use super::bearing::PyBearing;
 use super::errors::IntoPy;
-use super::parallel::{chunked_map, default_chunk};
+use super::parallel::map_interruptible;
 use crate::bearing::quasi_static::{static_start_q, WarmStart};
 use crate::bearing::state::Tilt;
 use crate::bearing::{BearingModel, BearingState, RacewayControl, SolveOptions};
@@ -20,7 +20,7 @@ pub fn solve_options(effects: Option<Vec<String>>, raceway_control: &str) -> Res
     if let Some(names) = effects {
         o.effects = EffectSet::from_names(&names)?;
     }
-    o.control = match raceway_control {
+    o.raceway_control = match raceway_control {
         "outer" => RacewayControl::Outer,
         "inner" => RacewayControl::Inner,
         other => {
@@ -36,11 +36,11 @@ pub fn solve_options(effects: Option<Vec<String>>, raceway_control: &str) -> Res
 
 /// [Fx, Fy, Fz, Mx, My] (N, N m) from the Python load arguments; the radial
 /// force acts along x and the tilting moment about y.
-pub fn load_vector(axial_n: f64, radial_n: f64, moment_nmm: f64) -> Result<[f64; 5]> {
+pub fn load_vector(axial_n: f64, radial_n: f64, moment_n_m: f64) -> Result<[f64; 5]> {
     finite("axial_n", axial_n)?;
     finite("radial_n", radial_n)?;
-    finite("moment_nmm", moment_nmm)?;
-    Ok([radial_n, 0.0, axial_n, 0.0, moment_nmm * 1e-3])
+    finite("moment_n_m", moment_n_m)?;
+    Ok([radial_n, 0.0, axial_n, 0.0, moment_n_m])
 }
 
 fn check_speed(speed_rpm: f64) -> Result<f64> {
@@ -49,12 +49,12 @@ fn check_speed(speed_rpm: f64) -> Result<f64> {
 
 pub fn state_dict<'py>(py: Python<'py>, s: &BearingState) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    d.set_item("displacement", s.displacement_m_rad.to_vec().into_pyarray(py))?;
-    d.set_item("applied_load", s.applied_load_n_nm.to_vec().into_pyarray(py))?;
-    let k: Vec<Vec<f64>> = s.stiffness_matrix_si.iter().map(|r| r.to_vec()).collect();
+    d.set_item("displacement", s.displacement.to_vec().into_pyarray(py))?;
+    d.set_item("applied_load", s.applied_load.to_vec().into_pyarray(py))?;
+    let k: Vec<Vec<f64>> = s.stiffness_matrix.iter().map(|r| r.to_vec()).collect();
     d.set_item("stiffness_matrix", PyArray2::from_vec2(py, &k)?)?;
-    d.set_item("axial_stiffness_n_per_m", s.axial_stiffness_n_per_m)?;
-    d.set_item("radial_stiffness_n_per_m", s.radial_stiffness_n_per_m)?;
+    d.set_item("axial_stiffness_n_per_m", s.axial_stiffness_seed_n_per_m)?;
+    d.set_item("radial_stiffness_n_per_m", s.radial_stiffness_seed_n_per_m)?;
     d.set_item("iterations", s.iterations)?;
     d.set_item("residual", s.residual)?;
     d.set_item("speed_rpm", s.speed_rpm)?;
@@ -83,8 +83,8 @@ pub fn state_dict<'py>(py: Python<'py>, s: &BearingState) -> PyResult<Bound<'py,
     )?;
     b.set_item("centrifugal_force_n", col(&|x| x.centrifugal_force_n).into_pyarray(py))?;
     b.set_item(
-        "gyroscopic_moment_nmm",
-        col(&|x| x.gyroscopic_moment_n_m * 1e3).into_pyarray(py),
+        "gyroscopic_moment_n_m",
+        col(&|x| x.gyroscopic_moment_n_m).into_pyarray(py),
     )?;
     b.set_item("orbit_speed_rpm", col(&|x| x.orbit_speed_rad_s * rpm).into_pyarray(py))?;
     b.set_item("spin_speed_rpm", col(&|x| x.spin_speed_rad_s * rpm).into_pyarray(py))?;
@@ -113,16 +113,16 @@ pub fn solve_point<'py>(
     bearing: &crate::bearing::Bearing,
     axial_n: f64,
     radial_n: f64,
-    moment_nmm: f64,
+    moment_n_m: f64,
     speed_rpm: f64,
     effects: Option<Vec<String>>,
     raceway_control: &str,
     misalignment_rad: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let load = load_vector(axial_n, radial_n, moment_nmm).py_err()?;
+    let load = load_vector(axial_n, radial_n, moment_n_m).py_err()?;
     let speed = check_speed(speed_rpm).py_err()?;
     let mut opts = solve_options(effects, raceway_control).py_err()?;
-    opts.tilt = tilt_option(misalignment_rad, moment_nmm).py_err()?;
+    opts.tilt = tilt_option(misalignment_rad, moment_n_m).py_err()?;
     let s = py
         .detach(|| -> Result<BearingState> {
             let m = BearingModel::new(bearing)?;
@@ -137,16 +137,16 @@ pub fn solve_point<'py>(
 }
 
 /// Tilt handling: held at `misalignment_rad` (ISO/TS 16281 practice, moment
-/// is a reaction), or free (None) so the ring carries `moment_nmm`.
-pub fn tilt_option(misalignment_rad: Option<f64>, moment_nmm: f64) -> Result<Tilt> {
+/// is a reaction), or free (None) so the ring carries the moment (`moment_n_m`).
+pub fn tilt_option(misalignment_rad: Option<f64>, moment_n_m: f64) -> Result<Tilt> {
     match misalignment_rad {
         None => Ok(Tilt::Free),
         Some(t) => {
             finite("misalignment_rad", t)?;
-            if moment_nmm != 0.0 {
+            if moment_n_m != 0.0 {
                 return Err(Error::config(
-                    "moment_nmm",
-                    moment_nmm,
+                    "moment_n_m",
+                    moment_n_m,
                     "a moment needs a free tilt: pass misalignment_rad=None (the tilt is then solved)",
                 ));
             }
@@ -180,15 +180,15 @@ pub fn ring_forces_point<'py>(
         })
         .py_err()?;
     let d = PyDict::new(py);
-    d.set_item("reaction_n_nm", f.reaction_n_nm.to_vec().into_pyarray(py))?;
-    let k: Vec<Vec<f64>> = f.stiffness_matrix_si.iter().map(|r| r.to_vec()).collect();
+    d.set_item("reaction", f.reaction.to_vec().into_pyarray(py))?;
+    let k: Vec<Vec<f64>> = f.stiffness_matrix.iter().map(|r| r.to_vec()).collect();
     d.set_item("stiffness_matrix", PyArray2::from_vec2(py, &k)?)?;
     Ok(d)
 }
 
 /// Stiffness and displacements against speed (see thermobear.stiffness_curve).
 #[pyfunction]
-#[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, moment_nmm, effects=None, raceway_control="outer", misalignment_rad=Some(0.0), progress=None))]
+#[pyo3(signature = (bearing, speeds_rpm, axial_n, radial_n, moment_n_m, effects=None, raceway_control="outer", misalignment_rad=Some(0.0), progress=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn stiffness_curve<'py>(
     py: Python<'py>,
@@ -196,7 +196,7 @@ pub fn stiffness_curve<'py>(
     speeds_rpm: PyReadonlyArray1<'py, f64>,
     axial_n: f64,
     radial_n: f64,
-    moment_nmm: f64,
+    moment_n_m: f64,
     effects: Option<Vec<String>>,
     raceway_control: &str,
     misalignment_rad: Option<f64>,
@@ -206,21 +206,31 @@ pub fn stiffness_curve<'py>(
     for &s in &speeds {
         check_speed(s).py_err()?;
     }
-    let load = load_vector(axial_n, radial_n, moment_nmm).py_err()?;
+    let load = load_vector(axial_n, radial_n, moment_n_m).py_err()?;
     let mut opts = solve_options(effects, raceway_control).py_err()?;
-    opts.tilt = tilt_option(misalignment_rad, moment_nmm).py_err()?;
+    opts.tilt = tilt_option(misalignment_rad, moment_n_m).py_err()?;
     let model = BearingModel::new(&bearing.inner).py_err()?;
     let start = py.detach(|| static_start_q(&model, &load, &opts)).py_err()?;
     let static_state = py.detach(|| model.solve_static(&load, &opts)).py_err()?;
-    let results = chunked_map(py, &speeds, default_chunk(speeds.len()), progress.as_ref(), |&n| {
+    let results = map_interruptible(py, &speeds, None, progress.as_ref(), |&n| {
         if n == 0.0 {
             Ok(static_state.clone())
         } else {
             model.solve_from(&load, n, &opts, start, &mut WarmStart::new())
         }
     })?;
-    let states: Vec<BearingState> = results.into_iter().collect::<Result<_>>().py_err()?;
-    curve_columns(py, &states)
+    let (states, finished, failed) = super::errors::split_results(results);
+    let d = curve_columns(py, &states)?;
+    if !failed.is_empty() {
+        return Err(super::errors::partial_error(
+            py,
+            &speeds,
+            d.into_any(),
+            finished,
+            &failed,
+        ));
+    }
+    Ok(d)
 }
 
 /// Columns of a stiffness curve (one entry per state).
@@ -229,34 +239,31 @@ pub fn curve_columns<'py>(py: Python<'py>, states: &[BearingState]) -> PyResult<
     let col = |f: &dyn Fn(&BearingState) -> f64| -> Vec<f64> { states.iter().map(f).collect() };
     d.set_item(
         "axial_stiffness_n_per_m",
-        col(&|s| s.axial_stiffness_n_per_m).into_pyarray(py),
+        col(&|s| s.axial_stiffness_seed_n_per_m).into_pyarray(py),
     )?;
     d.set_item(
         "radial_stiffness_n_per_m",
-        col(&|s| s.radial_stiffness_n_per_m).into_pyarray(py),
+        col(&|s| s.radial_stiffness_seed_n_per_m).into_pyarray(py),
     )?;
     let names = ["x", "y", "z", "rx", "ry"];
     let units = ["n_per_m", "n_per_m", "n_per_m", "nm_per_rad", "nm_per_rad"];
     for i in 0..5 {
         let key = format!("k_{}{}_{}", names[i], names[i], units[i]);
-        d.set_item(key, col(&|s| s.stiffness_matrix_si[i][i]).into_pyarray(py))?;
+        d.set_item(key, col(&|s| s.stiffness_matrix[i][i]).into_pyarray(py))?;
     }
-    d.set_item("k_xz_n_per_m", col(&|s| s.stiffness_matrix_si[0][2]).into_pyarray(py))?;
-    d.set_item(
-        "k_xry_n_per_rad",
-        col(&|s| s.stiffness_matrix_si[0][4]).into_pyarray(py),
-    )?;
+    d.set_item("k_xz_n_per_m", col(&|s| s.stiffness_matrix[0][2]).into_pyarray(py))?;
+    d.set_item("k_xry_n_per_rad", col(&|s| s.stiffness_matrix[0][4]).into_pyarray(py))?;
     d.set_item(
         "radial_displacement_mm",
-        col(&|s| s.displacement_m_rad[0].hypot(s.displacement_m_rad[1]) * 1e3).into_pyarray(py),
+        col(&|s| s.displacement[0].hypot(s.displacement[1]) * 1e3).into_pyarray(py),
     )?;
     d.set_item(
         "axial_displacement_mm",
-        col(&|s| s.displacement_m_rad[2] * 1e3).into_pyarray(py),
+        col(&|s| s.displacement[2] * 1e3).into_pyarray(py),
     )?;
     d.set_item(
         "tilt_rad",
-        col(&|s| s.displacement_m_rad[3].hypot(s.displacement_m_rad[4])).into_pyarray(py),
+        col(&|s| s.displacement[3].hypot(s.displacement[4])).into_pyarray(py),
     )?;
     let fold = |f: &dyn Fn(&crate::bearing::BallState) -> f64, max: bool| -> Vec<f64> {
         states

@@ -1,26 +1,19 @@
 //! Bindings for the motorized spindle (seed B): coupled steady state,
 //! transient, speed x preload x load grids and the compensation preload.
-//! Sweeps run through `chunked_map` (GIL released, Ctrl-C, progress).
+//! Sweeps run through `map_interruptible` (GIL released, Ctrl-C, progress).
 
 use numpy::{IntoPyArray, PyArray2};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::errors::IntoPy;
-use super::parallel::{chunked_map, default_chunk};
+use super::parallel::{map_interruptible, watched};
 use crate::effects::EffectSet;
 use crate::error::{finite, non_negative, positive, Error, Result};
 use crate::spindle::{
     compensation_preload, grid_point, CompensationPoint, GridPoint, PairState, Preload, Spindle, SpindleConfig,
     SpindleState,
 };
-
-/// Preset names and their bearing variant.
-const PRESETS: [(&str, &str); 3] = [
-    ("seed-ceramic-spindle", "hybrid"),
-    ("seed-steel-spindle", "steel"),
-    ("seed-full-ceramic-spindle", "ceramic"),
-];
 
 /// A motorized spindle (native).
 #[pyclass(name = "Spindle", module = "thermobear._native", frozen)]
@@ -43,11 +36,11 @@ fn preload_of(kind: &str, force_n: f64, rate_n_per_um: f64) -> Result<Preload> {
 
 fn pair_dict<'py>(py: Python<'py>, p: &PairState) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    d.set_item("displacement", p.displacement_m_rad.to_vec().into_pyarray(py))?;
+    d.set_item("displacement", p.displacement.to_vec().into_pyarray(py))?;
     d.set_item("axial_force_n", p.axial_force_n.to_vec())?;
     d.set_item("preload_n", p.preload_n)?;
     d.set_item("spring_compression_m", p.spring_compression_m)?;
-    let k: Vec<Vec<f64>> = p.stiffness_matrix_si.iter().map(|r| r.to_vec()).collect();
+    let k: Vec<Vec<f64>> = p.stiffness_matrix.iter().map(|r| r.to_vec()).collect();
     d.set_item("stiffness_matrix", PyArray2::from_vec2(py, &k)?)?;
     let b = &p.bearings[0].balls;
     let col = |f: &dyn Fn(&crate::bearing::BallState) -> f64| -> Vec<f64> { b.iter().map(f).collect() };
@@ -63,7 +56,7 @@ fn pair_dict<'py>(py: Python<'py>, p: &PairState) -> PyResult<Bound<'py, PyDict>
     d.set_item("outer_load_n", col(&|x| x.outer_load_n))?;
     // Radial load [Fx, Fy] the pair carries: the sum over its two bearings
     // (both frames share x and y, spindle/pair.rs).
-    let (la, lb) = (&p.bearings[0].applied_load_n_nm, &p.bearings[1].applied_load_n_nm);
+    let (la, lb) = (&p.bearings[0].applied_load, &p.bearings[1].applied_load);
     d.set_item("radial_load_n", vec![la[0] + lb[0], la[1] + lb[1]])?;
     Ok(d)
 }
@@ -123,22 +116,7 @@ impl PySpindle {
     /// A preset spindle by name (see `preset_names`).
     #[staticmethod]
     fn preset(name: &str) -> PyResult<Self> {
-        let variant = PRESETS
-            .iter()
-            .find(|(n, _)| n.eq_ignore_ascii_case(name))
-            .map(|(_, v)| *v)
-            .ok_or_else(|| {
-                Error::config(
-                    "spindle",
-                    name,
-                    format!(
-                        "unknown spindle preset; known: {}",
-                        PRESETS.iter().map(|p| p.0).collect::<Vec<_>>().join(", ")
-                    ),
-                )
-            })
-            .py_err()?;
-        let inner = Spindle::seed_b(variant).py_err()?;
+        let inner = Spindle::preset(name).py_err()?;
         Ok(PySpindle {
             inner,
             name: name.to_ascii_lowercase(),
@@ -147,7 +125,7 @@ impl PySpindle {
 
     #[staticmethod]
     fn preset_names() -> Vec<&'static str> {
-        PRESETS.iter().map(|p| p.0).collect()
+        Spindle::preset_names()
     }
 
     /// A copy with other settings (None keeps the current value).
@@ -181,7 +159,7 @@ impl PySpindle {
             cfg.effects = EffectSet::from_names(&names).py_err()?;
         }
         if let Some(mu) = spin_friction {
-            cfg.spin_friction = non_negative("spin_friction", mu).py_err()?;
+            cfg.spin_friction_coefficient = non_negative("spin_friction_coefficient", mu).py_err()?;
         }
         if let Some(h) = heat {
             h.apply(&mut cfg).py_err()?;
@@ -262,7 +240,7 @@ impl PySpindle {
         d.set_item("assembly_temperature_c", c.assembly_temperature_c)?;
         d.set_item("lubricant", p.lubricant.name.clone())?;
         d.set_item("lubrication_factor_f0", p.lubrication_factor_f0)?;
-        d.set_item("spin_friction", c.spin_friction)?;
+        d.set_item("spin_friction", c.spin_friction_coefficient)?;
         d.set_item("heat_model", c.heat_model.name())?;
         d.set_item("lubrication", c.lubrication.name())?;
         d.set_item("churning_oil_fraction", c.churning_oil_fraction)?;
@@ -305,7 +283,7 @@ impl PySpindle {
 
     /// Coupled steady state at one speed (GIL released).
     fn steady_state<'py>(&self, py: Python<'py>, speed_rpm: f64) -> PyResult<Bound<'py, PyDict>> {
-        let s = py.detach(|| self.inner.steady_state(speed_rpm)).py_err()?;
+        let s = py.detach(|| self.inner.thermal_state(speed_rpm)).py_err()?;
         state_dict(py, &self.inner, &s)
     }
 
@@ -316,7 +294,8 @@ impl PySpindle {
     }
 
     /// Transient from uniform `initial_c` (default ambient): times [s],
-    /// node names and temperatures (rows: times) [C] (GIL released).
+    /// node names and temperatures (rows: times) [C] (GIL released; Ctrl-C
+    /// stops it within a step).
     #[pyo3(signature = (speed_rpm, duration_s, dt_s=5.0, record_every=1, initial_c=None, mechanics_update_k=0.05))]
     #[allow(clippy::too_many_arguments)]
     fn transient<'py>(
@@ -330,12 +309,11 @@ impl PySpindle {
         mechanics_update_k: f64,
     ) -> PyResult<Bound<'py, PyDict>> {
         non_negative("mechanics_update_k", mechanics_update_k).py_err()?;
-        let run = py
-            .detach(|| {
-                self.inner
-                    .transient(speed_rpm, duration_s, dt_s, record_every, initial_c, mechanics_update_k)
-            })
-            .py_err()?;
+        let run = watched(py, 1, None, |_, _| {
+            self.inner
+                .transient(speed_rpm, duration_s, dt_s, record_every, initial_c, mechanics_update_k)
+        })?
+        .py_err()?;
         let d = PyDict::new(py);
         d.set_item("time_s", run.times_s.clone().into_pyarray(py))?;
         d.set_item("node_names", run.names.to_vec())?;
@@ -365,13 +343,9 @@ impl PySpindle {
             }
         }
         let sp = &self.inner;
-        let res = chunked_map(
-            py,
-            &items,
-            default_chunk(items.len()),
-            progress.as_ref(),
-            |&(n, p, f)| grid_point(sp, n, p, f),
-        )?;
+        let res = map_interruptible(py, &items, None, progress.as_ref(), |&(n, p, f)| {
+            grid_point(sp, n, p, f)
+        })?;
         let pts: Vec<GridPoint> = res.into_iter().collect::<Result<_>>().py_err()?;
         let d = PyDict::new(py);
         let col = |f: &dyn Fn(&GridPoint) -> f64| -> Vec<f64> { pts.iter().map(f).collect() };
@@ -416,7 +390,7 @@ impl PySpindle {
     ) -> PyResult<Bound<'py, PyDict>> {
         let ks = non_negative("spring_rate_n_per_um", spring_rate_n_per_um).py_err()? * 1e6;
         let sp = &self.inner;
-        let res = chunked_map(py, &speeds_rpm, 1, progress.as_ref(), |&n| {
+        let res = map_interruptible(py, &speeds_rpm, None, progress.as_ref(), |&n| {
             compensation_preload(sp, &[n], ks).map(|v| v[0])
         })?;
         let pts: Vec<CompensationPoint> = res.into_iter().collect::<Result<_>>().py_err()?;
@@ -439,7 +413,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 /// Python dict: `heat_model` ("palmgren" | "skf"), `lubrication` (method;
 /// its defaults fill `lubrication_factor_f0` and `churning_oil_fraction`
 /// when not given), `skf_series`, `sliding_friction_ehl`,
-/// `replenishment_krs`, `seal_moment_nmm`.
+/// `replenishment_krs`, `seal_moment_n_m`.
 #[derive(FromPyObject)]
 #[pyo3(from_item_all)]
 pub struct SpindleHeatArgs {
@@ -450,7 +424,7 @@ pub struct SpindleHeatArgs {
     skf_series: Option<String>,
     sliding_friction_ehl: Option<f64>,
     replenishment_krs: Option<f64>,
-    seal_moment_nmm: Option<f64>,
+    seal_moment_n_m: Option<f64>,
 }
 
 impl SpindleHeatArgs {
@@ -488,8 +462,8 @@ impl SpindleHeatArgs {
         if self.replenishment_krs.is_some() {
             cfg.skf.replenishment_krs = self.replenishment_krs;
         }
-        if let Some(m) = self.seal_moment_nmm {
-            cfg.skf.seal_moment_n_m = m * 1e-3;
+        if let Some(m) = self.seal_moment_n_m {
+            cfg.skf.seal_moment_n_m = m;
         }
         cfg.skf.validate()
     }

@@ -8,7 +8,7 @@ use pyo3::types::PyDict;
 
 use super::bearing::{PyBearing, PyMaterial};
 use super::errors::IntoPy;
-use super::parallel::{chunked_map, default_chunk};
+use super::parallel::map_interruptible;
 use super::solve::{curve_columns, solve_options, state_dict, tilt_option};
 use crate::bearing::BearingType;
 use crate::bearing::{Bearing, BearingState};
@@ -40,7 +40,7 @@ pub struct Settings {
     skf_series: Option<String>,
     sliding_friction_ehl: Option<f64>,
     replenishment_krs: Option<f64>,
-    seal_moment_nmm: f64,
+    seal_moment_n_m: f64,
 }
 
 impl Settings {
@@ -50,7 +50,7 @@ impl Settings {
             series: self.skf_series.as_deref().map(SkfSeries::from_name).transpose()?,
             mu_ehl: self.sliding_friction_ehl,
             replenishment_krs: self.replenishment_krs,
-            seal_moment_n_m: self.seal_moment_nmm * 1e-3,
+            seal_moment_n_m: self.seal_moment_n_m,
         };
         skf.validate()?;
         Ok((HeatModel::from_name(&self.heat_model)?, skf))
@@ -81,7 +81,7 @@ impl Settings {
             lubrication_factor_f0: f0,
             churning_oil_fraction: x,
             solve,
-            spin_friction: self.spin_friction,
+            spin_friction_coefficient: self.spin_friction,
             extra_heat_w: self.extra_heat_w,
             housing_conductance_scale: self.housing_conductance_scale,
             ..CoupledOptions::default()
@@ -125,8 +125,8 @@ fn heat_items(py: Python<'_>, d: &Bound<'_, PyDict>, h: &HeatReport) -> PyResult
     )?;
     d.set_item("oil_temperature_c", h.oil_temperature_c)?;
     d.set_item("viscosity_cst", h.viscosity_cst)?;
-    d.set_item("load_moment_nmm", h.load_moment_n_m * 1e3)?;
-    d.set_item("viscous_moment_nmm", h.viscous_moment_n_m * 1e3)?;
+    d.set_item("load_moment_n_m", h.load_moment_n_m)?;
+    d.set_item("viscous_moment_n_m", h.viscous_moment_n_m)?;
     d.set_item("total_heat_w", h.heat.total_w())?;
     d.set_item("churning_w", h.churning_w)?;
     d.set_item("cage_speed_rad_s", h.cage_speed_rad_s)?;
@@ -168,9 +168,9 @@ fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> P
     def.set_item("centrifugal_expansion_um", c.model().ring_expansion_m(omega) * um)?;
     def.set_item(
         "radial_displacement_um",
-        s.bearing.displacement_m_rad[0].hypot(s.bearing.displacement_m_rad[1]) * um,
+        s.bearing.displacement[0].hypot(s.bearing.displacement[1]) * um,
     )?;
-    def.set_item("axial_displacement_um", s.bearing.displacement_m_rad[2] * um)?;
+    def.set_item("axial_displacement_um", s.bearing.displacement[2] * um)?;
     d.set_item("deformations", def)?;
     d.set_item("solution", state_dict(py, &s.bearing)?)?;
     d.set_item("iterations", s.iterations)?;
@@ -248,10 +248,8 @@ pub fn thermal_stiffness_curve<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let speeds = speeds_rpm.as_slice()?.to_vec();
     let c = settings.build(&bearing.inner, effects).py_err()?;
-    let results = chunked_map(py, &speeds, default_chunk(speeds.len()), progress.as_ref(), |&n| {
-        c.solve(n, axial_n, radial_n)
-    })?;
-    let states: Vec<ThermalState> = results.into_iter().collect::<Result<_>>().py_err()?;
+    let results = map_interruptible(py, &speeds, None, progress.as_ref(), |&n| c.solve(n, axial_n, radial_n))?;
+    let (states, finished, failed) = super::errors::split_results(results);
     let bearings: Vec<BearingState> = states.iter().map(|s| s.bearing.clone()).collect();
     let d = curve_columns(py, &bearings)?;
     let col = |f: &dyn Fn(&ThermalState) -> f64| -> Vec<f64> { states.iter().map(f).collect() };
@@ -295,6 +293,15 @@ pub fn thermal_stiffness_curve<'py>(
         col(&|s| c.model().ring_expansion_m(crate::units::rpm_to_rad_s(s.speed_rpm)) * 1e6).into_pyarray(py),
     )?;
     d.set_item("thermal_iterations", col(&|s| s.iterations as f64).into_pyarray(py))?;
+    if !failed.is_empty() {
+        return Err(super::errors::partial_error(
+            py,
+            &speeds,
+            d.into_any(),
+            finished,
+            &failed,
+        ));
+    }
     Ok(d)
 }
 

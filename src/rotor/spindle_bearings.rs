@@ -123,9 +123,9 @@ pub struct RowOperatingPoint {
     /// ignores the direction of rotation).
     pub speed_rpm: f64,
     /// Inner-ring displacement carrying the preload, row frame [m, rad].
-    pub displacement_m_rad: [f64; 5],
+    pub displacement: [f64; 5],
     /// Ball reaction on the inner ring at that point, row frame [N, N m].
-    pub reaction_n_nm: [f64; 5],
+    pub reaction: [f64; 5],
     /// Tangent stiffness -d(reaction)/dq, row frame (SI blocks).
     pub stiffness_si: Matrix5<f64>,
     /// Mean orbital (cage) speed of the balls [rad/s].
@@ -210,16 +210,16 @@ impl PreloadedRow {
         let opts = self.options_at(speed_rpm);
         let load = [0.0, 0.0, self.preload_n, 0.0, 0.0];
         let state = self.model.solve(&load, speed_rpm, &opts)?;
-        let q = state.displacement_m_rad;
+        let q = state.displacement;
         let mut warm = WarmStart::new();
         let f = self.model.ring_forces(&q, speed_rpm, &opts, &mut warm)?;
         let balls = self.model.ball_states(&q, speed_rpm, &opts, &warm)?;
         let cage = balls.iter().map(|b| b.orbit_speed_rad_s).sum::<f64>() / balls.len().max(1) as f64;
         Ok(RowOperatingPoint {
             speed_rpm,
-            displacement_m_rad: q,
-            reaction_n_nm: f.reaction_n_nm,
-            stiffness_si: Matrix5::from_fn(|i, j| f.stiffness_matrix_si[i][j]),
+            displacement: q,
+            reaction: f.reaction,
+            stiffness_si: Matrix5::from_fn(|i, j| f.stiffness_matrix[i][j]),
             cage_speed_rad_s: cage,
             offsets: opts.offsets,
         })
@@ -360,7 +360,7 @@ impl NonlinearForce for NonlinearBearingForces {
                 0.0
             };
             let du = lateral_to_row_cage(&u, r.mirrored, cage);
-            let mut qr = r.point.displacement_m_rad;
+            let mut qr = r.point.displacement;
             for (a, d) in qr.iter_mut().zip(du) {
                 *a += d;
             }
@@ -368,8 +368,8 @@ impl NonlinearForce for NonlinearBearingForces {
                 let mut warm = r.warm.lock().map_err(|_| poisoned())?;
                 r.row.model.ring_forces(&qr, self.speed_rpm, &r.options, &mut warm)?
             };
-            let mut delta = f.reaction_n_nm;
-            for (d, f0) in delta.iter_mut().zip(r.point.reaction_n_nm) {
+            let mut delta = f.reaction;
+            for (d, f0) in delta.iter_mut().zip(r.point.reaction) {
                 *d -= f0;
             }
             let fl = cage_to_shaft_lateral(&delta, r.mirrored, cage);
@@ -440,7 +440,7 @@ mod tests {
             let u = nalgebra::Vector4::new(0.0, 0.0, 0.0, th);
             let f_lin = -(k * u);
             let dq = lateral_to_row_cage(&[0.0, 0.0, 0.0, th], mirrored, 0.0);
-            let mut q = p.displacement_m_rad;
+            let mut q = p.displacement;
             for (a, d) in q.iter_mut().zip(dq) {
                 *a += d;
             }
@@ -448,12 +448,7 @@ mod tests {
                 .model
                 .ring_forces(&q, speed, &r.options_at(speed), &mut WarmStart::new())
                 .unwrap();
-            let delta: Vec<f64> = f
-                .reaction_n_nm
-                .iter()
-                .zip(p.reaction_n_nm)
-                .map(|(a, b)| a - b)
-                .collect();
+            let delta: Vec<f64> = f.reaction.iter().zip(p.reaction).map(|(a, b)| a - b).collect();
             let f_full = cage_to_shaft_lateral(&[delta[0], delta[1], delta[2], delta[3], delta[4]], mirrored, 0.0);
             assert!(f_lin[3] < 0.0 && f_full[3] < 0.0, "restoring moment {f_lin} {f_full:?}");
             // Unmirrored: pressure centre on -z, force +x; mirrored: on +z, force -x.
@@ -530,7 +525,7 @@ mod tests {
         )
         .unwrap();
         let shifted = row("7008C", Some(ax)).operating_point(15_000.0).unwrap();
-        assert!((shifted.displacement_m_rad[2] - (plain.displacement_m_rad[2] - 3e-6)).abs() < 1e-9);
+        assert!((shifted.displacement[2] - (plain.displacement[2] - 3e-6)).abs() < 1e-9);
         assert!((shifted.stiffness_si[(0, 0)] / plain.stiffness_si[(0, 0)] - 1.0).abs() < 1e-6);
         assert!(OffsetTable::new(vec![1.0, 1.0], vec![RacewayOffsets::default(); 2]).is_err());
     }
@@ -550,12 +545,12 @@ mod tests {
         let z = r.model.ball_count() as f64;
         let u = [6e-6, 0.0, 0.0, 0.0];
         let force = |cage: f64| {
-            let mut q = p.displacement_m_rad;
+            let mut q = p.displacement;
             for (a, d) in q.iter_mut().zip(lateral_to_row_cage(&u, false, cage)) {
                 *a += d;
             }
             let f = r.model.ring_forces(&q, speed, &opts, &mut WarmStart::new()).unwrap();
-            cage_to_shaft_lateral(&f.reaction_n_nm, false, cage)
+            cage_to_shaft_lateral(&f.reaction, false, cage)
         };
         let pitch = 2.0 * std::f64::consts::PI / z;
         let (a, b, c) = (force(0.1), force(0.1 + pitch), force(0.1 + 0.5 * pitch));

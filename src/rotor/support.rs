@@ -41,19 +41,19 @@ impl BearingCoefficients {
     pub fn diagonal(
         radial_stiffness_n_per_m: f64,
         axial_stiffness_n_per_m: f64,
-        tilt_stiffness_nm_per_rad: f64,
+        tilt_stiffness_n_m_per_rad: f64,
         radial_damping_n_s_per_m: f64,
     ) -> Result<Self> {
         non_negative("radial_stiffness_n_per_m", radial_stiffness_n_per_m)?;
         non_negative("axial_stiffness_n_per_m", axial_stiffness_n_per_m)?;
-        non_negative("tilt_stiffness_nm_per_rad", tilt_stiffness_nm_per_rad)?;
+        non_negative("tilt_stiffness_n_m_per_rad", tilt_stiffness_n_m_per_rad)?;
         non_negative("radial_damping_n_s_per_m", radial_damping_n_s_per_m)?;
         let k = Matrix5::from_diagonal(&nalgebra::Vector5::new(
             radial_stiffness_n_per_m,
             radial_stiffness_n_per_m,
             axial_stiffness_n_per_m,
-            tilt_stiffness_nm_per_rad,
-            tilt_stiffness_nm_per_rad,
+            tilt_stiffness_n_m_per_rad,
+            tilt_stiffness_n_m_per_rad,
         ));
         let c = Matrix5::from_diagonal(&nalgebra::Vector5::new(
             radial_damping_n_s_per_m,

@@ -378,6 +378,7 @@ pub fn time_response(
     let c3 = 1.0 / (2.0 * BETA) - 1.0;
 
     for step in 1..=steps {
+        crate::cancel::check()?;
         let t1 = step as f64 * dt;
         let f_ext = lin.external(t1);
         let mut x1 = &xi + &v * dt + &a * (0.5 * dt * dt);

@@ -34,7 +34,7 @@
 //! * Heat per bearing from its quasi-static state (A-20..A-27): M1 with
 //!   Fa and Fr of that bearing, Mv at the pair's ball temperature, spin heat
 //!   per contact with the Hertz E(kappa) at the free contact angle, spin
-//!   friction coefficient `spin_friction`; Burton-Staph split; the network
+//!   friction coefficient `spin_friction_coefficient`; Burton-Staph split; the network
 //!   lumps a pair in one inner/balls/outer node triple.
 //! * Motor losses as in [`SpindleNetwork::sources_w`] (stator copper +
 //!   iron n^1.5, rotor copper + windage n^2).
@@ -68,7 +68,12 @@ use crate::Bearing;
 /// Assumed spin (traction) coefficient mu_s of A-22: EHL traction of
 /// mineral oils at the spin-dominated sliding of angular-contact bearings
 /// is typically 0.03-0.07; we take 0.05.
-pub const DEFAULT_SPIN_FRICTION: f64 = 0.05;
+/// The default of both the spindle and the single bearing
+/// ([`crate::thermal::coupled::CoupledOptions`]), as in Python.
+pub const DEFAULT_SPIN_FRICTION_COEFFICIENT: f64 = 0.05;
+/// The default spin friction coefficient under its former name.
+#[deprecated(since = "0.2.0", note = "use DEFAULT_SPIN_FRICTION_COEFFICIENT")]
+pub const DEFAULT_SPIN_FRICTION: f64 = DEFAULT_SPIN_FRICTION_COEFFICIENT;
 /// Spring rate implied by seed B Fig. 17: 6.45 N / 17.92 um = 0.36 N/um.
 pub const SEED_B_SPRING_RATE_N_PER_M: f64 = 6.45 / 17.92e-6;
 
@@ -81,8 +86,11 @@ pub struct SpindleConfig {
     pub preload: Preload,
     /// Working radial load at the spindle nose \[N\].
     pub radial_load_n: f64,
-    /// Spin friction coefficient mu_s.
-    pub spin_friction: f64,
+    /// Spin friction coefficient mu_s (dimensionless; default
+    /// [`DEFAULT_SPIN_FRICTION_COEFFICIENT`]). Stored files that name it
+    /// `spin_friction` still load.
+    #[serde(alias = "spin_friction")]
+    pub spin_friction_coefficient: f64,
     /// Temperature at which the spindle was assembled (zero thermal offsets) \[C\].
     pub assembly_temperature_c: f64,
     /// Effects (high-speed bearing terms, thermal expansion by part,
@@ -112,14 +120,54 @@ pub struct SpindleConfig {
     pub tolerance_k: f64,
 }
 
+/// Spindle presets by name (the names of Python's `tb.Spindle.preset`) and
+/// the bearing variant of each: seed B's spindle with hybrid (Si3N4 balls,
+/// steel rings), all-steel or all-ceramic 7009C/7008C bearings.
+pub const SPINDLE_PRESETS: [(&str, &str); 3] = [
+    ("seed-ceramic-spindle", "hybrid"),
+    ("seed-steel-spindle", "steel"),
+    ("seed-full-ceramic-spindle", "ceramic"),
+];
+
 impl SpindleConfig {
+    /// The preset spindle `name` (case-insensitive; the names of
+    /// [`SPINDLE_PRESETS`], as Python's `tb.Spindle.preset`).
+    pub fn preset(name: &str) -> Result<Self> {
+        let variant = SPINDLE_PRESETS
+            .iter()
+            .find(|(n, _)| n.eq_ignore_ascii_case(name))
+            .map(|(_, v)| *v)
+            .ok_or_else(|| {
+                Error::config(
+                    "spindle",
+                    name,
+                    format!("unknown spindle preset; known: {}", Self::preset_names().join(", ")),
+                )
+            })?;
+        Self::seed_b_variant(variant)
+    }
+
+    /// The names [`SpindleConfig::preset`] accepts.
+    pub fn preset_names() -> Vec<&'static str> {
+        SPINDLE_PRESETS.iter().map(|p| p.0).collect()
+    }
+
+    /// Seed B spindle with `variant` bearings ("steel", "hybrid", "ceramic").
+    #[deprecated(
+        since = "0.2.0",
+        note = "use SpindleConfig::preset with a preset name (\"seed-ceramic-spindle\" for the hybrid variant, \"seed-steel-spindle\", \"seed-full-ceramic-spindle\")"
+    )]
+    pub fn seed_b(variant: &str) -> Result<Self> {
+        Self::seed_b_variant(variant)
+    }
+
     /// Seed B spindle with `variant` bearings ("steel", "hybrid", "ceramic"),
     /// 400 N spring preload, no radial load (see the module docs and
     /// [`SpindleParams::seed_b`]); every effect on except the unbalanced
     /// magnetic pull, which is off by default as in the rotor model
     /// (`SpindleVibrationConfig::seed`); its data are the rotor preset's
     /// ([`CoreMagneticPull::seed_b`]).
-    pub fn seed_b(variant: &str) -> Result<Self> {
+    fn seed_b_variant(variant: &str) -> Result<Self> {
         let suffix = match variant.to_ascii_lowercase().as_str() {
             "steel" => "",
             "hybrid" => "-hybrid",
@@ -146,7 +194,7 @@ impl SpindleConfig {
                 rate_n_per_m: SEED_B_SPRING_RATE_N_PER_M,
             },
             radial_load_n: 0.0,
-            spin_friction: DEFAULT_SPIN_FRICTION,
+            spin_friction_coefficient: DEFAULT_SPIN_FRICTION_COEFFICIENT,
             assembly_temperature_c: ambient,
             effects: EffectSet::all().without(Effect::UnbalancedMagneticPull),
             magnetic_pull: Some(magnetic_pull),
@@ -285,7 +333,7 @@ fn pair_heat_model(b: &Bearing) -> Result<PairHeatModel> {
 impl Spindle {
     /// Build the pairs and the network.
     pub fn new(config: SpindleConfig) -> Result<Self> {
-        non_negative("spin_friction", config.spin_friction)?;
+        non_negative("spin_friction_coefficient", config.spin_friction_coefficient)?;
         in_range("churning_oil_fraction", config.churning_oil_fraction, 0.0, 1.0)?;
         config.skf.validate()?;
         finite("radial_load_n", config.radial_load_n)?;
@@ -349,9 +397,25 @@ impl Spindle {
         })
     }
 
-    /// Seed B spindle with `variant` bearings (see [`SpindleConfig::seed_b`]).
+    /// The preset spindle `name` ("seed-ceramic-spindle",
+    /// "seed-steel-spindle", "seed-full-ceramic-spindle"; see
+    /// [`SpindleConfig::preset`]), as Python's `tb.Spindle.preset`.
+    pub fn preset(name: &str) -> Result<Self> {
+        Spindle::new(SpindleConfig::preset(name)?)
+    }
+
+    /// The names [`Spindle::preset`] accepts.
+    pub fn preset_names() -> Vec<&'static str> {
+        SpindleConfig::preset_names()
+    }
+
+    /// Seed B spindle with `variant` bearings ("steel", "hybrid", "ceramic").
+    #[deprecated(
+        since = "0.2.0",
+        note = "use Spindle::preset with a preset name (\"seed-ceramic-spindle\" for the hybrid variant, \"seed-steel-spindle\", \"seed-full-ceramic-spindle\")"
+    )]
     pub fn seed_b(variant: &str) -> Result<Self> {
-        Spindle::new(SpindleConfig::seed_b(variant)?)
+        Spindle::new(SpindleConfig::seed_b_variant(variant)?)
     }
 
     /// The same spindle with another preload.
@@ -403,10 +467,16 @@ impl Spindle {
         super::shaft_loads::lever_rule_n(self.magnetic_pull_n(), at, p.front_span_m + p.rear_span_m)
     }
 
+    /// The pair loads under their former name; see [`Spindle::pair_loads`].
+    #[deprecated(since = "0.2.0", note = "use Spindle::pair_loads (SI: N, N m)")]
+    pub fn pair_loads_n_nm(&self) -> Result<([f64; 5], [f64; 5])> {
+        self.pair_loads()
+    }
+
     /// External loads [Fx, Fy, Fz, Mx, My] on the front and rear pair
     /// centres: the nose load along x ([`Self::pair_radial_loads_n`]) and
     /// the magnetic pull along y ([`Self::pair_magnetic_pull_n`]) (N, N m).
-    pub fn pair_loads_n_nm(&self) -> Result<([f64; 5], [f64; 5])> {
+    pub fn pair_loads(&self) -> Result<([f64; 5], [f64; 5])> {
         let (xf, xr) = self.pair_radial_loads_n()?;
         let (yf, yr) = self.pair_magnetic_pull_n()?;
         Ok(([xf, yf, 0.0, 0.0, 0.0], [xr, yr, 0.0, 0.0, 0.0]))
@@ -523,7 +593,7 @@ impl Spindle {
         speed_rpm: f64,
     ) -> Result<BearingHeatReport> {
         let g = &bearing.geometry;
-        let l = &state.applied_load_n_nm;
+        let l = &state.applied_load;
         let axial = l[2].max(0.0);
         let radial = l[0].hypot(l[1]);
         let nb = state.balls.len().max(1) as f64;
@@ -559,7 +629,7 @@ impl Spindle {
             heat_model: c.heat_model,
             lubrication: c.lubrication,
             lubrication_factor_f0: c.params.lubrication_factor_f0,
-            spin_friction: c.spin_friction,
+            spin_friction_coefficient: c.spin_friction_coefficient,
             oil_volume_fraction: c.churning_oil_fraction,
             skf: c.skf,
         };
@@ -619,13 +689,13 @@ impl Spindle {
             }
         };
         let p = &self.config.params;
-        let (load_front, load_rear) = self.pair_loads_n_nm()?;
+        let (load_front, load_rear) = self.pair_loads()?;
         let f_off = to_raceway(&fo, &p.front_bearing);
         let r_off = to_raceway(&ro, &p.rear_bearing);
         let front = self.front.solve_warm(
             speed_rpm,
             &PairLoad {
-                load_n_nm: load_front,
+                external_load: load_front,
                 offsets: [f_off, f_off],
                 spring_growth_m,
             },
@@ -634,7 +704,7 @@ impl Spindle {
         let rear = self.rear.solve_warm(
             speed_rpm,
             &PairLoad {
-                load_n_nm: load_rear,
+                external_load: load_rear,
                 offsets: [r_off, r_off],
                 spring_growth_m,
             },
@@ -703,11 +773,22 @@ impl Spindle {
         Ok((e.front, e.rear))
     }
 
+    /// The coupled steady state under its former name; see
+    /// [`Spindle::thermal_state`].
+    #[deprecated(
+        since = "0.2.0",
+        note = "use Spindle::thermal_state (the name of the Python function)"
+    )]
+    pub fn steady_state(&self, speed_rpm: f64) -> Result<SpindleState> {
+        self.thermal_state(speed_rpm)
+    }
+
     /// Coupled steady state at `speed_rpm` (fixed point, see module docs).
     /// Thermal runaway (preload and bearing heat growing together while the
     /// temperature change does not shrink, or the oil leaving its data range
-    /// on the way) is reported as [`Error::ThermalRunaway`].
-    pub fn steady_state(&self, speed_rpm: f64) -> Result<SpindleState> {
+    /// on the way) is reported as [`Error::ThermalRunaway`]. Python's
+    /// `tb.thermal_state(spindle, speed_rpm=...)`.
+    pub fn thermal_state(&self, speed_rpm: f64) -> Result<SpindleState> {
         Self::check_speed(speed_rpm)?;
         let speed = rpm_to_rad_s(speed_rpm);
         let mut solver = SteadySolver::new(self.network.network.clone());
@@ -818,7 +899,8 @@ impl Spindle {
     /// of a step (explicit in the coupling, as the network integrator)
     /// whenever a node temperature has moved more than `mechanics_update_k`
     /// since the last mechanics solve (0: every step); the heat itself (oil
-    /// viscosity at the current temperature) is updated every step.
+    /// viscosity at the current temperature) is updated every step. Stops
+    /// with `Error::Interrupted` at a step after a cancel (`crate::cancel`).
     pub fn transient(
         &self,
         speed_rpm: f64,
@@ -844,6 +926,7 @@ impl Spindle {
             rpm_to_rad_s(speed_rpm),
             record_every,
             |_, temps, out| {
+                crate::cancel::check()?;
                 if let Some((tc, sc)) = &cache {
                     if tc.as_slice() == temps {
                         out.copy_from_slice(sc);
@@ -940,7 +1023,7 @@ pub fn compensation_preload(
     speeds_rpm
         .par_iter()
         .map(|&n| {
-            let s = sp.steady_state(n)?;
+            let s = sp.thermal_state(n)?;
             Ok(CompensationPoint {
                 speed_rpm: n,
                 axial_growth_m: s.axial_growth_m,
@@ -1002,7 +1085,7 @@ pub fn grid_point(spindle: &Spindle, speed_rpm: f64, preload_n: f64, radial_load
         },
     };
     let sp = spindle.with_preload(preload)?.with_radial_load(radial_load_n)?;
-    let s = sp.steady_state(speed_rpm)?;
+    let s = sp.thermal_state(speed_rpm)?;
     let (cold, _) = sp.isothermal(speed_rpm)?;
     let n = &sp.network;
     let t = &s.temperatures.temperatures_c;
@@ -1016,10 +1099,10 @@ pub fn grid_point(spindle: &Spindle, speed_rpm: f64, preload_n: f64, radial_load
         front_outer_c: t[n.front_outer],
         operating_preload_n: s.front.preload_n,
         bearing_heat_w: s.bearing_heat.iter().map(|h| h.heat.total_w()).sum(),
-        mechanical_radial_displacement_m: cold.displacement_m_rad[0].abs(),
+        mechanical_radial_displacement_m: cold.displacement[0].abs(),
         thermal_radial_displacement_m: s.front_radial_thermal_displacement_m(a0),
-        front_radial_stiffness_n_per_m: s.front.stiffness_matrix_si[0][0],
-        front_radial_stiffness_isothermal_n_per_m: cold.stiffness_matrix_si[0][0],
+        front_radial_stiffness_n_per_m: s.front.stiffness_matrix[0][0],
+        front_radial_stiffness_isothermal_n_per_m: cold.stiffness_matrix[0][0],
         axial_growth_m: s.axial_growth_m,
     })
 }

@@ -14,11 +14,11 @@
 //! ```
 //! use thermobear::spindle::{Preload, Spindle, SEED_B_SPRING_RATE_N_PER_M};
 //!
-//! let sp = Spindle::seed_b("hybrid")
+//! let sp = Spindle::preset("seed-ceramic-spindle")
 //!     .unwrap()
 //!     .with_preload(Preload::Spring { force_n: 300.0, rate_n_per_m: SEED_B_SPRING_RATE_N_PER_M })
 //!     .unwrap();
-//! let s = sp.steady_state(12_000.0).unwrap();
+//! let s = sp.thermal_state(12_000.0).unwrap();
 //! // All heat (motor + bearings) leaves through water, air and oil-air.
 //! assert!((s.boundary_flow_w - s.total_heat_w).abs() < 1e-6 * s.total_heat_w);
 //! // The spring took up the axial growth: the preload rose.
@@ -31,9 +31,11 @@ pub use pair::{BearingPair, PairLoad, PairState, PairWarm, Preload};
 pub mod coupled;
 pub mod shaft_loads;
 
+#[allow(deprecated)]
+pub use coupled::DEFAULT_SPIN_FRICTION;
 pub use coupled::{
     compensation_preload, grid_point, optimal_preload, settling_times_s, spindle_grid, BearingHeatReport,
-    CompensationPoint, GridPoint, OptimalPreload, Spindle, SpindleConfig, SpindleState, DEFAULT_SPIN_FRICTION,
-    SEED_B_SPRING_RATE_N_PER_M,
+    CompensationPoint, GridPoint, OptimalPreload, Spindle, SpindleConfig, SpindleState,
+    DEFAULT_SPIN_FRICTION_COEFFICIENT, SEED_B_SPRING_RATE_N_PER_M, SPINDLE_PRESETS,
 };
 pub use shaft_loads::{lever_rule_n, CoreMagneticPull};

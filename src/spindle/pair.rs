@@ -81,7 +81,7 @@ impl Preload {
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct PairLoad {
     /// External load on the shaft at the pair centre [Fx, Fy, Fz, Mx, My] (N, N m).
-    pub load_n_nm: [f64; 5],
+    pub external_load: [f64; 5],
     /// Thermal (or fit) offsets of the groove centres of bearings A and B
     /// each in its own frame.
     pub offsets: [RacewayOffsets; 2],
@@ -94,7 +94,7 @@ pub struct PairLoad {
 #[derive(Debug, Clone, PartialEq)]
 pub struct PairState {
     /// Shaft displacement at the pair centre [x, y, z, theta_x, theta_y] (m, rad).
-    pub displacement_m_rad: [f64; 5],
+    pub displacement: [f64; 5],
     /// Bearing states A and B (each in its own frame).
     pub bearings: [BearingState; 2],
     /// Axial force of bearing A and B on their inner rings (local, loading positive) \[N\].
@@ -104,7 +104,7 @@ pub struct PairState {
     /// Extra spring compression x \[m\] (0 for a rigid pair).
     pub spring_compression_m: f64,
     /// Pair stiffness at the pair centre, sum_k T_k^T K_k T_k (SI blocks).
-    pub stiffness_matrix_si: [[f64; 5]; 5],
+    pub stiffness_matrix: [[f64; 5]; 5],
     /// Newton iterations of the shaft equilibrium.
     pub iterations: usize,
 }
@@ -145,7 +145,7 @@ struct Residual {
 #[derive(Debug, Clone, Default)]
 pub struct PairWarm {
     /// Shaft displacement at the pair centre [x, y, z, theta_x, theta_y] (m, rad).
-    pub displacement_m_rad: [f64; 5],
+    pub displacement: [f64; 5],
     /// Extra spring compression x \[m\] (0 for a rigid pair).
     pub spring_compression_m: f64,
     balls: [WarmStart; 2],
@@ -188,8 +188,8 @@ impl BearingPair {
             ..options
         };
         let f0 = preload.force_n();
-        let ca = a.solve_static(&[0.0, 0.0, f0, 0.0, 0.0], &cold)?.displacement_m_rad[2];
-        let cb = b.solve_static(&[0.0, 0.0, f0, 0.0, 0.0], &cold)?.displacement_m_rad[2];
+        let ca = a.solve_static(&[0.0, 0.0, f0, 0.0, 0.0], &cold)?.displacement[2];
+        let cb = b.solve_static(&[0.0, 0.0, f0, 0.0, 0.0], &cold)?.displacement[2];
         if (ca - cb).abs() > 1e-6 * ca.abs().max(1e-12) {
             return Err(Error::config(
                 "bearing_b",
@@ -265,7 +265,7 @@ impl BearingPair {
         let mut kpair = [[0.0; 5]; 5];
         let mut axial = [0.0; 2];
         let mut forces = Vec::with_capacity(2);
-        r[..5].copy_from_slice(&load.load_n_nm);
+        r[..5].copy_from_slice(&load.external_load);
         for k in 0..2 {
             let model = if k == 0 { &self.model_a } else { &self.model_b };
             let opts = SolveOptions {
@@ -274,17 +274,17 @@ impl BearingPair {
             };
             let f = model.ring_forces(&q[k], speed_rpm, &opts, &mut warm[k])?;
             let t = transfer(k, self.z_of(k));
-            axial[k] = -f.reaction_n_nm[2];
+            axial[k] = -f.reaction[2];
             // r += T^T R ; d r / d u = -T^T K T ; K = -dR/dq.
             for i in 0..5 {
                 for a in 0..5 {
-                    r[i] += t[a][i] * f.reaction_n_nm[a];
+                    r[i] += t[a][i] * f.reaction[a];
                 }
                 for j in 0..5 {
                     let mut s = 0.0;
                     for a in 0..5 {
                         for b in 0..5 {
-                            s += t[a][i] * f.stiffness_matrix_si[a][b] * t[b][j];
+                            s += t[a][i] * f.stiffness_matrix[a][b] * t[b][j];
                         }
                     }
                     kpair[i][j] += s;
@@ -296,21 +296,21 @@ impl BearingPair {
                 for i in 0..5 {
                     let mut s = 0.0;
                     for a in 0..5 {
-                        s += t[a][i] * f.stiffness_matrix_si[a][2];
+                        s += t[a][i] * f.stiffness_matrix[a][2];
                     }
                     jac[i][5] += s;
                 }
                 // Spring row: g = -R_Bz - F0 - k x.
                 let ks = self.spring_rate().unwrap_or(0.0);
-                r[5] = -f.reaction_n_nm[2] - self.preload.force_n() - ks * x;
+                r[5] = -f.reaction[2] - self.preload.force_n() - ks * x;
                 for j in 0..5 {
                     let mut s = 0.0;
                     for b in 0..5 {
-                        s += f.stiffness_matrix_si[2][b] * t[b][j];
+                        s += f.stiffness_matrix[2][b] * t[b][j];
                     }
                     jac[5][j] = s;
                 }
-                jac[5][5] = -f.stiffness_matrix_si[2][2] - ks;
+                jac[5][5] = -f.stiffness_matrix[2][2] - ks;
             }
             forces.push(f);
         }
@@ -334,7 +334,7 @@ impl BearingPair {
     /// Solve from a start displacement and spring compression.
     pub fn solve_from(&self, speed_rpm: f64, load: &PairLoad, start_u: [f64; 5], start_x: f64) -> Result<PairState> {
         let mut w = PairWarm {
-            displacement_m_rad: start_u,
+            displacement: start_u,
             spring_compression_m: start_x,
             ..Default::default()
         };
@@ -343,9 +343,9 @@ impl BearingPair {
 
     /// Solve starting from (and updating) a warm start.
     pub fn solve_warm(&self, speed_rpm: f64, load: &PairLoad, pw: &mut PairWarm) -> Result<PairState> {
-        let (start_u, start_x) = (pw.displacement_m_rad, pw.spring_compression_m);
+        let (start_u, start_x) = (pw.displacement, pw.spring_compression_m);
         non_negative("speed_rpm", speed_rpm)?;
-        for (i, v) in load.load_n_nm.iter().enumerate() {
+        for (i, v) in load.external_load.iter().enumerate() {
             finite(
                 ["radial_x_n", "radial_y_n", "axial_n", "moment_x_n_m", "moment_y_n_m"][i],
                 *v,
@@ -357,7 +357,7 @@ impl BearingPair {
         let scale = self
             .preload
             .force_n()
-            .max(load.load_n_nm.iter().fold(1.0, |a, v| a.max(v.abs())));
+            .max(load.external_load.iter().fold(1.0, |a, v| a.max(v.abs())));
         let tol = self.options.tolerance.max(1e-10) * scale;
         let norm = |r: &[f64; 6]| {
             let m = r[3].abs().max(r[4].abs()) / self.spacing_m.max(0.01);
@@ -369,7 +369,7 @@ impl BearingPair {
         for it in 0..max_it {
             if rn <= tol {
                 let st = self.finish(u, x, speed_rpm, load, warm, res, it)?;
-                pw.displacement_m_rad = u;
+                pw.displacement = u;
                 pw.spring_compression_m = x;
                 return Ok(st);
             }
@@ -410,7 +410,7 @@ impl BearingPair {
         }
         if rn <= tol {
             let st = self.finish(u, x, speed_rpm, load, warm, res, max_it)?;
-            pw.displacement_m_rad = u;
+            pw.displacement = u;
             pw.spring_compression_m = x;
             return Ok(st);
         }
@@ -440,12 +440,12 @@ impl BearingPair {
             let balls = model.ball_states(&q[k], speed_rpm, &opts, &warm[k])?;
             let (ka, kr) = crate::bearing::seed_stiffness(model, &balls);
             states.push(BearingState {
-                displacement_m_rad: q[k],
-                applied_load_n_nm: f.reaction_n_nm.map(|v| -v),
+                displacement: q[k],
+                applied_load: f.reaction.map(|v| -v),
                 balls,
-                stiffness_matrix_si: f.stiffness_matrix_si,
-                axial_stiffness_n_per_m: ka,
-                radial_stiffness_n_per_m: kr,
+                stiffness_matrix: f.stiffness_matrix,
+                axial_stiffness_seed_n_per_m: ka,
+                radial_stiffness_seed_n_per_m: kr,
                 iterations,
                 residual: 0.0,
                 speed_rpm,
@@ -458,11 +458,11 @@ impl BearingPair {
             .pop()
             .ok_or_else(|| Error::convergence("bearing pair", 0, f64::NAN, 0.0))?;
         Ok(PairState {
-            displacement_m_rad: u,
+            displacement: u,
             axial_force_n: res.axial,
             preload_n: 0.5 * (res.axial[0] + res.axial[1]),
             spring_compression_m: x,
-            stiffness_matrix_si: res.kpair,
+            stiffness_matrix: res.kpair,
             bearings: [a, b],
             iterations,
         })
@@ -473,7 +473,7 @@ impl BearingPair {
     /// forward map whose Jacobian is minus the pair stiffness.
     pub fn shaft_reaction(&self, u: &[f64; 5], x: f64, speed_rpm: f64, load: &PairLoad) -> Result<[f64; 5]> {
         let no_load = PairLoad {
-            load_n_nm: [0.0; 5],
+            external_load: [0.0; 5],
             ..*load
         };
         let mut warm = [WarmStart::new(), WarmStart::new()];
@@ -498,11 +498,7 @@ mod tests {
         for speed in [0.0, 12_000.0] {
             let s = p.solve(speed, &PairLoad::default()).unwrap();
             assert!((s.axial_force_n[0] - s.axial_force_n[1]).abs() < 1e-6 * 300.0, "{s:?}");
-            assert!(
-                s.displacement_m_rad.iter().all(|v| v.abs() < 1e-12),
-                "{:?}",
-                s.displacement_m_rad
-            );
+            assert!(s.displacement.iter().all(|v| v.abs() < 1e-12), "{:?}", s.displacement);
             if speed == 0.0 {
                 assert!((s.preload_n - 300.0).abs() < 1e-3);
             }
@@ -513,8 +509,8 @@ mod tests {
     fn pair_stiffness_is_sum_of_mirrored_bearings() {
         let p = pair(Preload::Rigid { force_n: 400.0 });
         let s = p.solve(9000.0, &PairLoad::default()).unwrap();
-        let (ka, kb) = (&s.bearings[0].stiffness_matrix_si, &s.bearings[1].stiffness_matrix_si);
-        let k = &s.stiffness_matrix_si;
+        let (ka, kb) = (&s.bearings[0].stiffness_matrix, &s.bearings[1].stiffness_matrix);
+        let k = &s.stiffness_matrix;
         let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs());
         // Translations add directly; the mirror flips z and both tilts, so
         // their diagonal terms add as well, and the x-z couplings cancel.
@@ -537,11 +533,11 @@ mod tests {
     fn pair_stiffness_is_jacobian_of_pair_force() {
         let p = pair(Preload::Rigid { force_n: 300.0 });
         let load = PairLoad {
-            load_n_nm: [400.0, 0.0, 150.0, 0.0, 0.0],
+            external_load: [400.0, 0.0, 150.0, 0.0, 0.0],
             ..Default::default()
         };
         let s = p.solve(6000.0, &load).unwrap();
-        let u0 = s.displacement_m_rad;
+        let u0 = s.displacement;
         for j in 0..5 {
             let h = if j < 3 { 1e-9 } else { 1e-7 };
             let mut up = u0;
@@ -552,10 +548,10 @@ mod tests {
             let fm = p.shaft_reaction(&um, 0.0, 6000.0, &load).unwrap();
             for i in 0..5 {
                 let fd = -(fp[i] - fm[i]) / (2.0 * h);
-                let k = s.stiffness_matrix_si[i][j];
-                let scale = s.stiffness_matrix_si[i][i]
+                let k = s.stiffness_matrix[i][j];
+                let scale = s.stiffness_matrix[i][i]
                     .abs()
-                    .max(s.stiffness_matrix_si[j][j].abs())
+                    .max(s.stiffness_matrix[j][j].abs())
                     .max(1.0);
                 assert!(
                     (fd - k).abs() < 1e-4 * scale.sqrt() * k.abs().max(scale).sqrt(),

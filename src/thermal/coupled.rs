@@ -24,7 +24,7 @@
 //!    mean inner contact angle) + omega Mv (viscosity at the ball node when
 //!    `temperature_dependent_viscosity` is on, else at the oil-air supply
 //!    temperature, seed A assumption 3) + per-contact spin heat
-//!    |omega_s| (3/8) mu_s Q a E (`spin_friction`), E by Hamrock-Brewe at
+//!    |omega_s| (3/8) mu_s Q a E (`spin_friction_coefficient`), E by Hamrock-Brewe at
 //!    the operating contact angle; optionally the ball drag ("churning") in
 //!    the oil-air mixture, Z (pi/64) C_D X rho_oil D^2 dm^3 omega_c^3
 //!    ([`super::heat::ball_drag_power_w`], Harris & Kotzalas) at the cage speed of the
@@ -81,9 +81,10 @@ pub struct CoupledOptions {
     /// for a deep-groove bearing under oil mist (oil-air in seed A).
     pub lubrication_factor_f0: f64,
     /// Spin sliding friction coefficient mu_s. Seed A gives no value;
-    /// default 0.06, a typical traction coefficient of a steel EHL contact
-    /// (Harris & Kotzalas, traction curves 0.03..0.1). Assumption.
-    pub spin_friction: f64,
+    /// default 0.05 ([`crate::spindle::DEFAULT_SPIN_FRICTION_COEFFICIENT`],
+    /// the spindle's and Python's default): EHL traction at spin-dominated
+    /// sliding is 0.03..0.07 (Harris & Kotzalas, traction curves). Assumption.
+    pub spin_friction_coefficient: f64,
     /// Assembly (reference) temperature of the clearance and fits \[C\];
     /// `None`: the ambient temperature of the network.
     pub reference_temperature_c: Option<f64>,
@@ -127,7 +128,7 @@ impl Default for CoupledOptions {
         CoupledOptions {
             solve: SolveOptions::default(),
             lubrication_factor_f0: 1.0,
-            spin_friction: 0.06,
+            spin_friction_coefficient: crate::spindle::DEFAULT_SPIN_FRICTION_COEFFICIENT,
             reference_temperature_c: None,
             extra_heat_w: 0.0,
             churning_oil_fraction: 0.0,
@@ -146,7 +147,7 @@ impl CoupledOptions {
     /// Check every field (bad values name their field).
     pub fn validate(&self) -> Result<()> {
         positive("lubrication_factor_f0", self.lubrication_factor_f0)?;
-        non_negative("spin_friction", self.spin_friction)?;
+        non_negative("spin_friction_coefficient", self.spin_friction_coefficient)?;
         if let Some(t) = self.reference_temperature_c {
             in_range("reference_temperature_c", t, -60.0, 200.0)?;
         }
@@ -286,7 +287,7 @@ pub fn friction_settings(options: &CoupledOptions) -> FrictionSettings {
         heat_model: options.heat_model,
         lubrication: options.lubrication,
         lubrication_factor_f0: options.lubrication_factor_f0,
-        spin_friction: options.spin_friction,
+        spin_friction_coefficient: options.spin_friction_coefficient,
         oil_volume_fraction: options.churning_oil_fraction,
         skf: options.skf,
     }
@@ -582,7 +583,7 @@ impl CoupledBearing {
                 Some(s) if it > 1 && off == last_off => s.clone(),
                 _ => {
                     opts.offsets = off;
-                    let q0 = last_state.as_ref().map_or(start, |s| s.displacement_m_rad);
+                    let q0 = last_state.as_ref().map_or(start, |s| s.displacement);
                     match self.model.solve_from(&load, speed_rpm, &opts, q0, &mut warm) {
                         Ok(s) => s,
                         // A warm start can fail where balls lose contact:
@@ -859,8 +860,8 @@ mod tests {
             .model()
             .solve(&[FR, 0.0, FA, 0.0, 0.0], 10_000.0, &c.options().solve)
             .unwrap();
-        assert_eq!(s.bearing.displacement_m_rad, iso.displacement_m_rad);
-        assert_eq!(s.bearing.stiffness_matrix_si, iso.stiffness_matrix_si);
+        assert_eq!(s.bearing.displacement, iso.displacement);
+        assert_eq!(s.bearing.stiffness_matrix, iso.stiffness_matrix);
         assert_eq!(s.raceway_offsets, RacewayOffsets::default());
         assert!(s.heat.heat.total_w() > 0.0);
     }
@@ -884,7 +885,7 @@ mod tests {
             .solve(&[FR, 0.0, FA, 0.0, 0.0], 8_000.0, &c.options().solve)
             .unwrap();
         for k in 0..5 {
-            assert!((state.displacement_m_rad[k] - iso.displacement_m_rad[k]).abs() <= 1e-12);
+            assert!((state.displacement[k] - iso.displacement[k]).abs() <= 1e-12);
         }
         // a hotter oil is thinner: less viscous loss, same load moment
         let (_, hot) = c.isothermal_heat(8_000.0, FA, FR, 100.0).unwrap();
@@ -1030,14 +1031,14 @@ mod tests {
         let th = stiffness_curve_mode(&c, &speeds, FA, FR, StiffnessMode::Thermal).unwrap();
         let sp = stiffness_curve_mode(&c, &speeds, FA, FR, StiffnessMode::Speed).unwrap();
         for (a, b) in th.iter().zip(&sp) {
-            assert_eq!(a.0.stiffness_matrix_si, b.0.stiffness_matrix_si);
+            assert_eq!(a.0.stiffness_matrix, b.0.stiffness_matrix);
         }
         let c = seed_a(EffectSet::all());
         let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
         let a = one.install(|| stiffness_curve_mode(&c, &speeds, FA, FR, StiffnessMode::Thermal).unwrap());
         let b = stiffness_curve_mode(&c, &speeds, FA, FR, StiffnessMode::Thermal).unwrap();
         for (x, y) in a.iter().zip(&b) {
-            assert_eq!(x.0.stiffness_matrix_si, y.0.stiffness_matrix_si);
+            assert_eq!(x.0.stiffness_matrix, y.0.stiffness_matrix);
         }
         assert!(StiffnessMode::from_name("hot").is_err());
     }

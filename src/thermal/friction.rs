@@ -580,7 +580,7 @@ pub struct FrictionSettings {
     /// Palmgren f0 (Palmgren model).
     pub lubrication_factor_f0: f64,
     /// Spin friction coefficient mu_s (Palmgren model, with the effect on).
-    pub spin_friction: f64,
+    pub spin_friction_coefficient: f64,
     /// Oil volume fraction X of the ball drag (both models; 0 = off).
     pub oil_volume_fraction: f64,
     /// SKF settings.
@@ -675,7 +675,7 @@ pub fn friction_heat(settings: &FrictionSettings, p: &FrictionPoint) -> Result<F
                 omega,
                 m1,
                 mv,
-                settings.spin_friction,
+                settings.spin_friction_coefficient,
                 p.inner_contacts,
                 p.outer_contacts,
             )?;

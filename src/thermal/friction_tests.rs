@@ -429,7 +429,7 @@ fn settings(model: HeatModel, x: f64) -> FrictionSettings {
         heat_model: model,
         lubrication: Lubrication::Jet,
         lubrication_factor_f0: 1.7,
-        spin_friction: 0.05,
+        spin_friction_coefficient: 0.05,
         oil_volume_fraction: x,
         skf: SkfSettings::default(),
     }

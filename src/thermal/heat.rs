@@ -198,8 +198,8 @@ pub fn viscous_moment_n_m(
 
 /// Spin friction moment of one contact Ms = (3/8) mu_s Q a E(kappa)
 /// [N m]; `elliptic_e` is the complete elliptic integral of the second kind.
-pub fn spin_moment_n_m(spin_friction: f64, load_n: f64, semi_major_m: f64, elliptic_e: f64) -> f64 {
-    0.375 * spin_friction * load_n * semi_major_m * elliptic_e
+pub fn spin_moment_n_m(spin_friction_coefficient: f64, load_n: f64, semi_major_m: f64, elliptic_e: f64) -> f64 {
+    0.375 * spin_friction_coefficient * load_n * semi_major_m * elliptic_e
 }
 
 /// One ball-raceway contact as seen by the heat model.
@@ -304,39 +304,40 @@ pub fn ball_drag_power_w(
     Ok(ball_count as f64 * force_n * v)
 }
 
-fn spin_heat(field: &str, spin_friction: f64, contacts: &[SpinContact]) -> Result<f64> {
+fn spin_heat(field: &str, spin_friction_coefficient: f64, contacts: &[SpinContact]) -> Result<f64> {
     let mut h = 0.0;
     for (j, c) in contacts.iter().enumerate() {
         non_negative(&format!("{field}[{j}].load_n"), c.load_n)?;
         non_negative(&format!("{field}[{j}].semi_major_m"), c.semi_major_m)?;
         positive(&format!("{field}[{j}].elliptic_e"), c.elliptic_e)?;
         finite(&format!("{field}[{j}].spin_speed_rad_s"), c.spin_speed_rad_s)?;
-        h += c.spin_speed_rad_s.abs() * spin_moment_n_m(spin_friction, c.load_n, c.semi_major_m, c.elliptic_e);
+        h += c.spin_speed_rad_s.abs()
+            * spin_moment_n_m(spin_friction_coefficient, c.load_n, c.semi_major_m, c.elliptic_e);
     }
     Ok(h)
 }
 
 /// Heat of one bearing: `speed_rad_s` is the ring relative speed
 /// omega, the moments come from [`load_moment_n_m`] and
-/// [`viscous_moment_n_m`], `spin_friction` is mu_s, and the contact slices
+/// [`viscous_moment_n_m`], `spin_friction_coefficient` is mu_s, and the contact slices
 /// hold one entry per ball (may be empty when no quasi-static solution is
 /// available: then only the rolling heat is counted).
 pub fn bearing_heat(
     speed_rad_s: f64,
     load_moment_n_m: f64,
     viscous_moment_n_m: f64,
-    spin_friction: f64,
+    spin_friction_coefficient: f64,
     inner_contacts: &[SpinContact],
     outer_contacts: &[SpinContact],
 ) -> Result<BearingHeat> {
     finite("speed_rad_s", speed_rad_s)?;
     non_negative("load_moment_n_m", load_moment_n_m)?;
     non_negative("viscous_moment_n_m", viscous_moment_n_m)?;
-    non_negative("spin_friction", spin_friction)?;
+    non_negative("spin_friction_coefficient", spin_friction_coefficient)?;
     Ok(BearingHeat {
         rolling_w: speed_rad_s.abs() * (load_moment_n_m + viscous_moment_n_m),
-        inner_spin_w: spin_heat("inner_contacts", spin_friction, inner_contacts)?,
-        outer_spin_w: spin_heat("outer_contacts", spin_friction, outer_contacts)?,
+        inner_spin_w: spin_heat("inner_contacts", spin_friction_coefficient, inner_contacts)?,
+        outer_spin_w: spin_heat("outer_contacts", spin_friction_coefficient, outer_contacts)?,
     })
 }
 

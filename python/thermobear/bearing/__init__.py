@@ -2,7 +2,7 @@
 quasi-static solve and the bearing stiffness matrix (crate: ``src/bearing``,
 bindings ``src/python/bearing.rs``).
 
-Stiffness against speed is :func:`thermobear.thermal.stiffness_curve`
+Stiffness against speed is [`thermobear.thermal.stiffness_curve`][thermobear.stiffness_curve]
 (its thermal mode needs the thermal network, one layer up)."""
 
 from .ball_bearing import Bearing, BearingSolution

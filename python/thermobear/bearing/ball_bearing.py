@@ -1,8 +1,8 @@
 """Ball bearings: construction, solving, stiffness.
 
 Every length a user passes or reads carries its unit in the name
-(``ball_diameter_mm``, ``axial_displacement_mm``); forces are N, moments
-N mm where the name says ``_nmm``; ``stiffness`` matrices are SI.
+(``ball_diameter_mm``, ``axial_displacement_um``); forces are N, moments
+N m (``_n_m``); ``stiffness`` matrices are SI.
 
 Displacements follow ISO/TS 16281: they are measured from the concentric
 position with the groove curvature centres in one plane, so taking up the
@@ -13,12 +13,20 @@ moves axially by about ``A sin(alpha0)`` before it carries any load).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .. import _native
+from .._deprecation import renamed_kwargs, warn_renamed
+from .._limits import cap_threads
+from .._names import renamed_columns
+from .._types import RacewayControl
 from .material import Material, _native_material
+
+if TYPE_CHECKING:
+    import polars
 
 
 def _effects_arg(effects: Optional[Sequence[str]]) -> Optional[list[str]]:
@@ -32,9 +40,11 @@ def _effects_arg(effects: Optional[Sequence[str]]) -> Optional[list[str]]:
 class Bearing:
     """A ball bearing (deep-groove or angular-contact).
 
-    Build with :meth:`preset` (``"6208"``, ``"7008C"``, ``"7009C"``, each also
-    ``-hybrid`` with Si3N4 balls and ``-ceramic``), :meth:`deep_groove`,
-    :meth:`angular_contact` or :meth:`from_toml`.
+    Build with ``preset`` (``"6208"``, ``"7008C"``, ``"7009C"``, each also
+    ``-hybrid`` with Si3N4 balls and ``-ceramic``),
+    [`deep_groove`][thermobear.bearing.ball_bearing.Bearing.deep_groove],
+    [`angular_contact`][thermobear.bearing.ball_bearing.Bearing.angular_contact] or
+    [`from_toml`][thermobear.bearing.ball_bearing.Bearing.from_toml].
     """
 
     def __init__(self, native: Any) -> None:
@@ -166,15 +176,16 @@ class Bearing:
         return dict(self._b.contact(raceway, float(contact_angle_deg), float(load_n), bool(exact)))
 
     # -- solving -------------------------------------------------------
+    @renamed_kwargs(moment_nmm=("moment_n_m", lambda v: float(v) / 1000.0))
     def solve(
         self,
         axial_n: float = 0.0,
         radial_n: float = 0.0,
-        moment_nmm: float = 0.0,
+        moment_n_m: float = 0.0,
         speed_rpm: float = 0.0,
         *,
         effects: Optional[Sequence[str]] = None,
-        raceway_control: str = "outer",
+        raceway_control: RacewayControl = "outer",
         misalignment_rad: Optional[float] = 0.0,
     ) -> BearingSolution:
         """Solve the bearing under an axial force, a radial force (along x)
@@ -182,17 +193,18 @@ class Bearing:
 
         At ``speed_rpm=0`` this is the static (Hertz) solve; above it the
         Jones-Harris quasi-static model with the named ``effects`` (default:
-        all; see :func:`thermobear.effects`), with outer- (default) or
+        all; see [`thermobear.effects`][thermobear.effects]), with outer- (default) or
         inner-``raceway_control``.
 
         The inner ring's tilt is held at ``misalignment_rad`` (default 0: the
         ISO/TS 16281 practice of a ring held by shaft and housing; the moment
         needed to hold it is a reaction). With ``misalignment_rad=None`` the
-        tilt is free and solved so that the bearing carries ``moment_nmm``."""
+        tilt is free and solved so that the bearing carries ``moment_n_m``
+        (N m; the older ``moment_nmm`` in N mm is deprecated and converted)."""
         raw = self._b.solve(
             float(axial_n),
             float(radial_n),
-            float(moment_nmm),
+            float(moment_n_m),
             float(speed_rpm),
             _effects_arg(effects),
             raceway_control,
@@ -205,24 +217,26 @@ class Bearing:
         points: Any,
         *,
         effects: Optional[Sequence[str]] = None,
-        raceway_control: str = "outer",
+        raceway_control: RacewayControl = "outer",
         misalignment_rad: Optional[float] = 0.0,
         threads: Optional[int] = None,
         progress: Any = None,
-    ) -> "polars.DataFrame":  # noqa: F821
+    ) -> polars.DataFrame:
         """Solve many operating points in one native call (rayon threads,
-        GIL released, Ctrl-C within 50 ms), each exactly as :meth:`solve`
+        GIL released, Ctrl-C within 50 ms), each exactly as [`solve`][thermobear.Bearing.solve]
         would (bit for bit).
 
         ``points``: a polars DataFrame (or a mapping of columns) with any of
-        ``axial_n``, ``radial_n``, ``moment_nmm``, ``speed_rpm`` (absent: 0);
-        other columns are carried through. Options as in :meth:`solve`, for
+        ``axial_n``, ``radial_n``, ``moment_n_m``, ``speed_rpm`` (absent: 0;
+        an older ``moment_nmm`` column in N mm is converted, with a warning);
+        other columns are carried through. Options as in [`solve`][thermobear.Bearing.solve], for
         every point; ``threads`` (default: all cores) and
         ``progress(done, total)``.
 
         Returns the input columns followed by one row of outputs per point:
-        ``axial_stiffness_n_per_m``, ``radial_stiffness_n_per_m`` (seed A),
-        ``k_xx_n_per_m``, ``k_zz_n_per_m``, ``k_ryry_nm_per_rad`` (diagonal of
+        ``axial_stiffness_seed_n_per_m``, ``radial_stiffness_seed_n_per_m``
+        (seed A's series formula), ``k_xx_n_per_m``, ``k_zz_n_per_m``,
+        ``k_ryry_n_m_per_rad`` (diagonal of
         the tangent stiffness), ``axial_displacement_um``,
         ``radial_displacement_um``, ``tilt_rad``, inner/outer contact angle
         max/min (``_deg``), ``inner_load_max_n``, ``outer_load_max_n``,
@@ -232,26 +246,31 @@ class Bearing:
         outputs; nothing is raised for it."""
         from .batch import column_array, join_inputs, operating_frame, result_frame
 
-        names = ("axial_n", "radial_n", "moment_nmm", "speed_rpm")
-        frame = operating_frame(points, names)
+        names = ("axial_n", "radial_n", "moment_n_m", "speed_rpm")
+        frame = operating_frame(_moment_in_n_m(points), names)
+        arrays = [column_array(frame, c) for c in names]
+        arrays[2] = arrays[2] * 1000.0  # the native call takes N mm
         raw = _native.solve_many(
             self._b,
-            *(column_array(frame, c) for c in names),
+            arrays[0],
+            arrays[1],
+            arrays[2],
+            arrays[3],
             effects=_effects_arg(effects),
             raceway_control=raceway_control,
             misalignment_rad=None if misalignment_rad is None else float(misalignment_rad),
-            threads=None if threads is None else int(threads),
+            threads=cap_threads(threads),
             progress=progress,
         )
         return join_inputs(frame, result_frame(raw))
 
     def ring_forces(
         self,
-        displacement: Sequence[float],
+        displacement: ArrayLike,
         speed_rpm: float = 0.0,
         *,
         effects: Optional[Sequence[str]] = None,
-        raceway_control: str = "outer",
+        raceway_control: RacewayControl = "outer",
     ) -> tuple[np.ndarray, np.ndarray]:
         """The forward map used inside time integration: for a prescribed
         inner-ring displacement ``[dx, dy, dz (m), theta_x, theta_y (rad)]``
@@ -264,17 +283,77 @@ class Bearing:
 
             raise ConfigError(f"invalid displacement = {q}: needs 5 values [dx, dy, dz, tx, ty]")
         raw = self._b.ring_forces(q, float(speed_rpm), _effects_arg(effects), raceway_control)
-        return np.asarray(raw["reaction_n_nm"]), np.asarray(raw["stiffness_matrix"])
+        return np.asarray(raw["reaction"]), np.asarray(raw["stiffness_matrix"])
+
+    def thermal_state(
+        self,
+        speed_rpm: float,
+        axial_n: Optional[float] = None,
+        radial_n: Optional[float] = None,
+        **options: Any,
+    ) -> Any:
+        """The coupled thermal steady state of this bearing: the same
+        computation as [`thermobear.thermal_state`][thermobear.thermal_state] (options as there);
+        returns a [`ThermalState`][thermobear.ThermalState]."""
+        return _task("thermal_state")(self, speed_rpm, axial_n, radial_n, **options)
+
+    def thermal_state_many(self, points: Any, **options: Any) -> polars.DataFrame:
+        """The coupled thermal steady state at many operating points: the
+        same computation as [`thermobear.thermal_state_many`][thermobear.thermal_state_many] (points
+        and options as there; one row per point, failed points as rows with
+        their error)."""
+        return _task("thermal_state_many")(self, points, **options)
 
     def __repr__(self) -> str:
         return repr(self._b)
 
 
+def _moment_in_n_m(points: Any) -> Any:
+    """``points`` with an older ``moment_nmm`` column (N mm) as ``moment_n_m``."""
+    import polars as pl
+
+    cols = points.columns if isinstance(points, pl.DataFrame) else list(points)
+    if "moment_nmm" not in cols:
+        return points
+    if "moment_n_m" in cols:
+        from ..errors import ConfigError
+
+        raise ConfigError("invalid points = both moment_nmm and moment_n_m: give moment_n_m")
+    warn_renamed("moment_nmm", "moment_n_m", stacklevel=3, what="value in N m, not N mm")
+    if isinstance(points, pl.DataFrame):
+        return points.with_columns((pl.col("moment_nmm") / 1000.0).alias("moment_n_m")).drop(
+            "moment_nmm"
+        )
+    out = {k: v for k, v in points.items() if k != "moment_nmm"}
+    out["moment_n_m"] = np.asarray(points["moment_nmm"], dtype=float) / 1000.0
+    return out
+
+
+#: Tasks of a bearing computed by a higher layer (the thermal model) and
+#: offered here as methods: name -> function(bearing, ...). The module that
+#: computes a task registers it (``register_task``) when it is imported,
+#: which ``import thermobear`` always does.
+_TASKS: dict[str, Any] = {}
+
+
+def register_task(name: str, function: Any) -> None:
+    """Offer ``function(bearing, ...)`` as the [`Bearing`][thermobear.Bearing] method ``name``."""
+    _TASKS[name] = function
+
+
+def _task(name: str) -> Any:
+    if name not in _TASKS:  # only when thermobear.thermal was never imported
+        from ..errors import ConfigError
+
+        raise ConfigError(f"invalid task = {name!r}: import thermobear first")
+    return _TASKS[name]
+
+
 @dataclass(frozen=True)
 class BearingSolution:
-    """A solved bearing. SI inside ``raw``; convenience properties in mm."""
+    """A solved bearing. SI inside ``raw``; displacements in um."""
 
-    raw: dict
+    raw: dict[str, Any]
 
     @property
     def displacement(self) -> np.ndarray:
@@ -282,12 +361,28 @@ class BearingSolution:
         return np.asarray(self.raw["displacement"])
 
     @property
+    def axial_displacement_um(self) -> float:
+        """Axial displacement of the inner ring [um]."""
+        return float(self.displacement[2] * 1e6)
+
+    @property
+    def radial_displacement_um(self) -> float:
+        """Radial displacement of the inner ring [um]."""
+        return float(np.hypot(self.displacement[0], self.displacement[1]) * 1e6)
+
+    @property
     def axial_displacement_mm(self) -> float:
-        return float(self.displacement[2] * 1e3)
+        """Deprecated: [`axial_displacement_um`][thermobear.BearingSolution.axial_displacement_um]
+        in mm."""
+        warn_renamed("axial_displacement_mm", "axial_displacement_um", what="value in um")
+        return self.axial_displacement_um / 1000.0
 
     @property
     def radial_displacement_mm(self) -> float:
-        return float(np.hypot(self.displacement[0], self.displacement[1]) * 1e3)
+        """Deprecated: [`radial_displacement_um`][thermobear.BearingSolution.radial_displacement_um]
+        in mm."""
+        warn_renamed("radial_displacement_mm", "radial_displacement_um", what="value in um")
+        return self.radial_displacement_um / 1000.0
 
     @property
     def tilt_rad(self) -> float:
@@ -306,14 +401,42 @@ class BearingSolution:
         return np.asarray(self.raw["stiffness_matrix"])
 
     @property
-    def axial_stiffness_n_per_m(self) -> float:
-        """Seed A eq. 39-40 axial stiffness."""
+    def axial_stiffness_seed_n_per_m(self) -> float:
+        """Seed A eq. 39-40 axial stiffness: the simplified series formula
+        (the complete one is [`k_zz_n_per_m`][thermobear.BearingSolution.k_zz_n_per_m])."""
         return float(self.raw["axial_stiffness_n_per_m"])
 
     @property
-    def radial_stiffness_n_per_m(self) -> float:
-        """Seed A eq. 41-42 radial stiffness."""
+    def radial_stiffness_seed_n_per_m(self) -> float:
+        """Seed A eq. 41-42 radial stiffness: the simplified series formula
+        (the complete one is [`k_xx_n_per_m`][thermobear.BearingSolution.k_xx_n_per_m])."""
         return float(self.raw["radial_stiffness_n_per_m"])
+
+    @property
+    def k_xx_n_per_m(self) -> float:
+        """Radial entry of the full 5x5 tangent [`stiffness`][thermobear.BearingSolution.stiffness]
+        [N/m]."""
+        return float(self.stiffness[0, 0])
+
+    @property
+    def k_zz_n_per_m(self) -> float:
+        """Axial entry of the full 5x5 tangent [`stiffness`][thermobear.BearingSolution.stiffness]
+        [N/m]."""
+        return float(self.stiffness[2, 2])
+
+    @property
+    def axial_stiffness_n_per_m(self) -> float:
+        """Deprecated:
+        [`axial_stiffness_seed_n_per_m`][thermobear.BearingSolution.axial_stiffness_seed_n_per_m]."""
+        warn_renamed("axial_stiffness_n_per_m", "axial_stiffness_seed_n_per_m")
+        return self.axial_stiffness_seed_n_per_m
+
+    @property
+    def radial_stiffness_n_per_m(self) -> float:
+        """Deprecated:
+        [`radial_stiffness_seed_n_per_m`][thermobear.BearingSolution.radial_stiffness_seed_n_per_m]."""
+        warn_renamed("radial_stiffness_n_per_m", "radial_stiffness_seed_n_per_m")
+        return self.radial_stiffness_seed_n_per_m
 
     @property
     def speed_rpm(self) -> float:
@@ -328,8 +451,34 @@ class BearingSolution:
         return float(self.raw["residual"])
 
     @property
-    def balls(self) -> "polars.DataFrame":  # noqa: F821
+    def balls(self) -> polars.DataFrame:
         """Per ball: azimuth, loads, contact angles, deflections, kinematics."""
         import polars as pl
 
-        return pl.DataFrame({k: np.asarray(v) for k, v in self.raw["balls"].items()})
+        return pl.DataFrame(renamed_columns(dict(self.raw["balls"])))
+
+    def __repr__(self) -> str:
+        return (
+            f"BearingSolution({self.speed_rpm:g} rpm, axial {self.axial_displacement_um:.3g} um, "
+            f"radial {self.radial_displacement_um:.3g} um, k_xx {self.k_xx_n_per_m:.3g} N/m)"
+        )
+
+    def summary(self) -> str:
+        """The solved state in a few lines: speed, load, displacements,
+        tilt, stiffness (full 5x5 diagonal and the seed formula),
+        convergence."""
+        f = self.applied_load
+        return "\n".join(
+            [
+                f"bearing solution at {self.speed_rpm:g} rpm",
+                f"  load: axial {f[2]:.4g} N, radial {float(np.hypot(f[0], f[1])):.4g} N, "
+                f"moment {float(np.hypot(f[3], f[4])):.4g} N m",
+                f"  displacement: axial {self.axial_displacement_um:.4g} um, radial "
+                f"{self.radial_displacement_um:.4g} um, tilt {self.tilt_rad:.3g} rad",
+                f"  stiffness (5x5): k_xx {self.k_xx_n_per_m:.4g} N/m, k_zz "
+                f"{self.k_zz_n_per_m:.4g} N/m",
+                f"  stiffness (seed formula): radial {self.radial_stiffness_seed_n_per_m:.4g} "
+                f"N/m, axial {self.axial_stiffness_seed_n_per_m:.4g} N/m",
+                f"  converged in {self.iterations} iterations, residual {self.residual:.3g}",
+            ]
+        )

@@ -7,15 +7,18 @@ failed point's outputs become nulls here (never NaN)."""
 
 from __future__ import annotations
 
-from typing import Any, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, Mapping, Sequence
 
 import numpy as np
+
+if TYPE_CHECKING:
+    import polars
 
 #: Columns of the error report of a batch result, after the outputs.
 ERROR_COLUMNS = ("ok", "error_kind", "error")
 
 
-def operating_frame(points: Any, columns: Sequence[str]) -> "polars.DataFrame":  # noqa: F821
+def operating_frame(points: Any, columns: Sequence[str]) -> polars.DataFrame:
     """``points`` as a polars DataFrame: a DataFrame, or a mapping of column
     name to values (scalars are broadcast). At least one of ``columns`` must
     be present; every column present must be numeric."""
@@ -57,16 +60,17 @@ def column_array(frame: Any, name: str, default: float = 0.0) -> np.ndarray:
     return np.ascontiguousarray(values, dtype=np.float64)
 
 
-def result_frame(raw: Mapping[str, Any]) -> "polars.DataFrame":  # noqa: F821
+def result_frame(raw: Mapping[str, Any]) -> polars.DataFrame:
     """The native columns as a DataFrame: outputs (nulls where a point
     failed), then ``ok``, ``error_kind``, ``error``."""
     import polars as pl
 
-    outputs = [k for k in raw if k not in ERROR_COLUMNS]
+    from .._names import renamed_columns
+
+    outputs = renamed_columns({k: raw[k] for k in raw if k not in ERROR_COLUMNS})
     ok = np.asarray(raw["ok"], dtype=bool)
     data: dict[str, Any] = {}
-    for k in outputs:
-        values = np.asarray(raw[k])
+    for k, values in outputs.items():
         data[k] = pl.Series(k, values).scatter(np.flatnonzero(~ok), None)
     data["ok"] = pl.Series("ok", ok)
     data["error_kind"] = pl.Series("error_kind", list(raw["error_kind"]), dtype=pl.String)
@@ -74,7 +78,7 @@ def result_frame(raw: Mapping[str, Any]) -> "polars.DataFrame":  # noqa: F821
     return pl.DataFrame(data)
 
 
-def join_inputs(frame: Any, result: Any) -> "polars.DataFrame":  # noqa: F821
+def join_inputs(frame: Any, result: Any) -> polars.DataFrame:
     """The input frame's columns followed by the result's; a name in both is
     an error (it would hide an input)."""
     from ..errors import ConfigError

@@ -1,5 +1,8 @@
 """The ``thermobear`` command line: ``demo`` (the seed studies), ``solve``
-(a system description), ``presets``, ``effects``, ``diagnose``."""
+(a system description), ``presets``, ``effects``, ``diagnose``,
+``calibrate``, ``study`` and ``validate``. Exit status 0 (ok), 1 (data,
+model or convergence error), 2 (usage), 130 (interrupted); see
+``thermobear.cli.main``."""
 
 from .main import main
 

@@ -7,10 +7,60 @@ from pathlib import Path
 from typing import Any, Optional, Sequence, Union
 
 from .. import plot
+from ..config import located_config_errors
 from ..diagnosis import BearingModelSpec, Diagnosis, SpindleModelSpec, diagnose, model_from_toml
-from ..errors import ConfigError, DataError
+from ..errors import ConfigError
 from ..spindle import Spindle
 from ..studies.output import save_figure, write_table
+from .data import located_data_errors, read_measurements
+
+#: ``holdout`` of ``diagnose_files`` that picks the highest speeds when
+#: the data hold three or more distinct speeds, and no hold-out otherwise.
+AUTO_HOLDOUT = "auto"
+
+
+def baseline(
+    system: Union[str, Path, None], spindle: Optional[str], without: Sequence[str] = ()
+) -> tuple[Any, Optional[dict]]:
+    """The baseline model spec -- of a bearing system description
+    (``system``, TOML) or of a spindle preset (``spindle``) -- with the
+    effects in ``without`` switched off, and the description's
+    ``[operating]`` table (None for a spindle). A ``ConfigError`` about the
+    description names its file, line and key."""
+    if system is not None and spindle is not None:
+        raise ConfigError("invalid baseline: give a system description (--model) or --spindle")
+    if spindle is not None:
+        full = SpindleModelSpec(Spindle.preset(spindle))
+        drop = set(full._expand(list(without))) if without else set()
+        return SpindleModelSpec(
+            full.spindle, effects=[e for e in full.effects if e not in drop]
+        ), None
+    if system is None:
+        raise ConfigError("invalid baseline: give a system description (--model) or --spindle")
+    with located_config_errors(system):
+        full_b, op = model_from_toml(system)
+        for w in without:
+            if w not in full_b.effects:
+                raise ConfigError(
+                    f"invalid without = {w!r}: not an effect of the baseline "
+                    f"({', '.join(full_b.effects)})"
+                )
+        effects = [e for e in full_b.effects if e not in set(without)]
+        return BearingModelSpec(full_b.bearing, effects=effects, **full_b.options), op
+
+
+def with_operating_loads(df: Any, op: Optional[dict]) -> Any:
+    """Measurements of a bearing with the loads of the system description's
+    ``[operating]`` table where the file gives none."""
+    import polars as pl
+
+    if op is None:
+        return df
+    if "axial_n" not in df.columns and "preload_n" not in df.columns:
+        df = df.with_columns(pl.lit(float(op.get("axial_n", 0.0))).alias("axial_n"))
+    if "radial_n" not in df.columns:
+        df = df.with_columns(pl.lit(float(op.get("radial_n", 0.0))).alias("radial_n"))
+    return df
 
 
 def diagnose_files(
@@ -20,45 +70,30 @@ def diagnose_files(
     *,
     spindle: Optional[str] = None,
     without: Sequence[str] = (),
+    candidates: Optional[Sequence[str]] = None,
+    holdout: Union[str, float, Sequence[str], None] = AUTO_HOLDOUT,
 ) -> tuple[Diagnosis, list[Path]]:
     """``thermobear diagnose``: diagnose a measurement file (CSV lines
     starting with ``#`` are comments) against a baseline -- a bearing system
     description (``system``, TOML) or a spindle preset (``spindle``, e.g.
     "seed-ceramic-spindle") -- with the effects in ``without`` (names, or
-    "thermal_displacement" for a spindle) switched off; write tables (gap,
-    audit, screening, points) and figures into ``out`` when given."""
+    "thermal_displacement" for a spindle) switched off; ``candidates`` and
+    ``holdout`` as [`thermobear.diagnose`][thermobear.diagnose] takes them (``"auto"``: the
+    highest speeds with three or more distinct speeds, else none); write
+    tables (gap, audit, screening, points) and figures into ``out`` when
+    given."""
     import polars as pl
 
-    if (system is None) == (spindle is None):
-        raise ConfigError("invalid baseline: give a system description (--model) or --spindle")
+    spec, op = baseline(system, spindle, without)
     p = Path(measured)
-    try:
-        df = pl.read_parquet(p) if p.suffix == ".parquet" else pl.read_csv(p, comment_prefix="#")
-    except Exception as e:  # noqa: BLE001
-        raise DataError(f"invalid measurements = {p}: cannot read: {e}") from None
-    if spindle is not None:
-        full = SpindleModelSpec(Spindle.preset(spindle))
-        drop = set(full._expand(list(without))) if without else set()
-        spec: Any = SpindleModelSpec(
-            full.spindle, effects=[e for e in full.effects if e not in drop]
+    df = with_operating_loads(read_measurements(p), op)
+    if isinstance(holdout, str) and holdout == AUTO_HOLDOUT:
+        n_speeds = df["speed_rpm"].n_unique() if "speed_rpm" in df.columns else 0
+        holdout = "highest_speeds" if n_speeds >= 3 else None
+    with located_data_errors(p):
+        d = diagnose(
+            spec, df, candidates=None if candidates is None else list(candidates), holdout=holdout
         )
-    else:
-        spec, op = model_from_toml(system)
-        for w in without:
-            if w not in spec.effects:
-                raise ConfigError(
-                    f"invalid without = {w!r}: not an effect of the baseline "
-                    f"({', '.join(spec.effects)})"
-                )
-        spec = BearingModelSpec(
-            spec.bearing, effects=[e for e in spec.effects if e not in set(without)], **spec.options
-        )
-        if "axial_n" not in df.columns and "preload_n" not in df.columns:
-            df = df.with_columns(pl.lit(float(op.get("axial_n", 0.0))).alias("axial_n"))
-        if "radial_n" not in df.columns:
-            df = df.with_columns(pl.lit(float(op.get("radial_n", 0.0))).alias("radial_n"))
-    n_speeds = df["speed_rpm"].n_unique() if "speed_rpm" in df.columns else 0
-    d = diagnose(spec, df, holdout="highest_speeds" if n_speeds >= 3 else None)
     files: list[Path] = []
     if out is not None:
         files += write_table(d.gap, out, "diagnosis_gap")

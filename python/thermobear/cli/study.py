@@ -6,6 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Optional
 
+from ..config import located_config_errors
 from ..study import load_study
 
 
@@ -15,11 +16,22 @@ def run_study_file(
     scheduler: Optional[str] = None,
     progress: Optional[bool] = None,
     overwrite: bool = False,
+    threads: Optional[int] = None,
 ) -> str:
-    """Run the study of a TOML file into ``out``; returns the report line."""
-    study = load_study(path)
+    """Run the study of a TOML file into ``out`` (``threads``: per chunk,
+    on this machine); returns the report line. A ``ConfigError`` about the
+    file names it, the line and the key."""
+    with located_config_errors(path):
+        study = load_study(path)
     try:
-        study.run(out, engine=scheduler, progress=progress, overwrite=overwrite, collect=False)
+        study.run(
+            out,
+            engine=scheduler,
+            progress=progress,
+            overwrite=overwrite,
+            collect=False,
+            threads=threads,
+        )
     except KeyboardInterrupt:
         if study.report is not None:
             study.report.interrupted = True

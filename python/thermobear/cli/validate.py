@@ -1,5 +1,5 @@
 """``thermobear validate [--out DIR] [SET...]``: the published data sets
-of :mod:`thermobear.validation` modelled, diagnosed and calibrated; the
+of [`thermobear.validation`][thermobear.validation] modelled, diagnosed and calibrated; the
 report (``validation.md`` + one figure per set) written into DIR."""
 
 from __future__ import annotations

@@ -1,28 +1,32 @@
-"""Model-vs-measurement discrepancy workflow (issue 6): find where a model
+"""Model-vs-measurement discrepancy workflow: find where a model
 misses measured data, name the missing effect the data support, show the
 gap shrink -- and refuse to name one the data cannot support.
 
-:func:`diagnose` runs the steps, one module each:
+[`diagnose`][thermobear.diagnose] runs the steps, one module each:
 
-* :mod:`.measurements` -- read and check the measured table, hold out points;
-* :mod:`.registry`, :mod:`.candidates` -- the effects registry and the
+* ``thermobear.diagnosis.measurements`` -- read and check the measured table, hold out points;
+* ``thermobear.diagnosis.registry``, ``thermobear.diagnosis.candidates`` -- the effects registry and
+the
   candidates (missing effects, miscalibrated inputs, sensor-offset decoys);
-* :mod:`.audit` -- the baseline's residual per quantity and speed band, and
+* ``thermobear.diagnosis.audit`` -- the baseline's residual per quantity and speed band, and
   the held-out gap before/after;
-* :mod:`.identifiability` -- fingerprints, look-alike pairs, the extra
+* ``thermobear.diagnosis.identifiability`` -- fingerprints, look-alike pairs, the extra
   measurement that separates them;
-* :mod:`.screening` -- each candidate calibrated alone and scored (BIC,
+* ``thermobear.diagnosis.screening`` -- each candidate calibrated alone and scored (BIC,
   AICc, cross-validated chi^2, the extrapolation check, 95 % profile
-  interval); :mod:`.control` -- the generic smooth control;
-* :mod:`.outliers` -- the robust outlier audit;
-* :mod:`.ties` -- each tie member's calibration and gap;
-* :mod:`.acceptance` -- the best candidate, ties, the joint refit;
-* :mod:`.verdict` -- the verdict in words; :mod:`.result` -- :class:`Diagnosis`;
-* :mod:`.workflow` -- :func:`diagnose`, the sequence of the steps;
-* :mod:`.joint` -- :func:`calibrate`, joint calibration over data sets.
+  interval); ``thermobear.diagnosis.control`` -- the generic smooth control;
+* ``thermobear.diagnosis.outliers`` -- the robust outlier audit;
+* ``thermobear.diagnosis.ties`` -- each tie member's calibration and gap;
+* ``thermobear.diagnosis.acceptance`` -- the best candidate, ties, the joint refit;
+* ``thermobear.diagnosis.verdict`` -- the verdict in words; ``thermobear.diagnosis.result`` --
+  [`Diagnosis`][thermobear.Diagnosis];
+* ``thermobear.diagnosis.workflow`` -- [`diagnose`][thermobear.diagnose], the sequence of the steps;
+* ``thermobear.diagnosis.joint`` -- [`calibrate`][thermobear.calibrate], joint
+  calibration over data sets.
 
-The machines behind the protocol of :mod:`.protocol`: one bearing
-(:mod:`.bearing_spec`) and the seed B spindle (:mod:`.spindle_spec`).
+The machines behind the protocol of ``thermobear.diagnosis.protocol``: one bearing
+(``thermobear.diagnosis.bearing_spec``) and the seed B spindle
+(``thermobear.diagnosis.spindle_spec``).
 """
 
 from .bearing_spec import BearingModelSpec, model_from_toml

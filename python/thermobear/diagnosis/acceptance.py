@@ -1,10 +1,10 @@
-"""Step 4 of :func:`thermobear.diagnose`: acceptance -- the best passing
+"""Step 4 of [`thermobear.diagnose`][thermobear.diagnose]: acceptance -- the best passing
 candidate, a tie set of rivals, the accepted record, and the joint refit
 of every accepted parameter."""
 
 from __future__ import annotations
 
-from typing import Optional
+from typing import Callable, Optional
 
 import numpy as np
 
@@ -17,13 +17,15 @@ from .ties import tie_members
 
 
 class _RefitProblem:
-    """The refit as :func:`~.joint._profile` reads a problem: bounds and
+    """The refit as ``_profile`` reads a problem: bounds and
     the residual/sigma of the training points against the parameters."""
 
-    def __init__(self, resid, lo: np.ndarray, hi: np.ndarray) -> None:
+    def __init__(
+        self, resid: Callable[[np.ndarray], np.ndarray], lo: np.ndarray, hi: np.ndarray
+    ) -> None:
         self.resid, self.lo, self.hi = resid, lo, hi
 
-    def chi2(self, theta) -> float:
+    def chi2(self, theta: np.ndarray) -> float:
         r = self.resid(theta)
         return float(r @ r)
 
@@ -32,12 +34,12 @@ def joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_option
     """Re-calibrate every accepted continuous parameter together (bounded
     least squares on the model itself, not the interpolant) once two or more
     are accepted: an effect calibrated alone absorbs part of the next one.
-    Intervals: 95 % profile likelihood, as :func:`~.joint.calibrate` gives
+    Intervals: 95 % profile likelihood, as [`calibrate`][thermobear.calibrate] gives
     them -- the values of one parameter where the chi^2, the others
     re-calibrated at each trial value, stays within 3.84 phi of the minimum
     (phi = max(1, reduced chi^2)); ``identified``: False for a parameter the
     Fisher information does not identify
-    (:func:`~.statistics.fisher_identifiability`) or whose interval spans
+    (``fisher_identifiability``) or whose interval spans
     both bounds. Updates ``accepted`` in place; returns (setting,
     prediction) or None."""
     from scipy.optimize import least_squares
@@ -94,7 +96,7 @@ def joint_refit(model, cands, accepted, cond, quantity, y, s, train, base_option
 
 def select(rows: list, tie_delta_bic: float) -> tuple[Optional[dict], list]:
     """The best passing screening row (largest delta-BIC; None when no row
-    passes) and its rivals (:func:`~.ties.tie_members`): every other named
+    passes) and its rivals (``tie_members``): every other named
     candidate -- passing or not -- whose delta-BIC is less than
     ``tie_delta_bic`` below the best's (a higher one included), unless it
     sits at a bound of its range; they make a tie set."""

@@ -1,4 +1,4 @@
-"""Step 1 and 6 of :func:`thermobear.diagnose`: the residual audit per
+"""Step 1 and 6 of [`thermobear.diagnose`][thermobear.diagnose]: the residual audit per
 quantity and speed band (mean and rms residual/sigma, the residual's
 shape) and the held-out gap before/after."""
 

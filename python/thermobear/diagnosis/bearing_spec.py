@@ -1,41 +1,44 @@
-"""The model spec of one bearing (:class:`BearingModelSpec`) and the
-baseline of a system description (:func:`model_from_toml`)."""
+"""The model spec of one bearing ([`BearingModelSpec`][thermobear.BearingModelSpec]) and the
+baseline of a system description (``model_from_toml``)."""
 
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, Optional, Sequence, Union
+from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
 
 import numpy as np
 
 from ..errors import ConfigError, ThermobearError
 from .candidates import Candidate, _candidate_list, load_level_candidates
 from .measurements import QUANTITIES
-from .protocol import ModelSpec
+from .protocol import ModelSpec, register_kind
 from .registry import _THERMAL_DEFAULTS, LOAD_SCALE_OPTIONS
+
+if TYPE_CHECKING:
+    import polars
 
 
 class BearingModelSpec(ModelSpec):
-    """The baseline model of one bearing: :class:`~thermobear.Bearing`,
+    """The baseline model of one bearing: [`Bearing`][thermobear.Bearing],
     ``effects`` (names; None = all) and the keyword options of
-    :func:`thermobear.thermal_state` (``lubricant``,
-    ``lubrication_factor_f0``, ``spin_friction``, ``oil_air_temperature_c``,
+    [`thermobear.thermal_state`][thermobear.thermal_state] (``lubricant``,
+    ``lubrication_factor_f0``, ``spin_friction_coefficient``, ``oil_air_temperature_c``,
     ``ambient_temperature_c``, ``housing_material``, ``raceway_control``,
     ``extra_heat_w``, ``housing_conductance_scale``, ``churning_oil_fraction``,
     ``heat_model``, ``lubrication``, ``sliding_friction_ehl``,
     ``replenishment_krs``) and the load scales ``axial_load_scale``,
     ``radial_load_scale`` (default 1; per level ``axial_load_scale@<N>``)
     applied to the stated loads of the measured conditions.
-    Evaluates every quantity of :data:`QUANTITIES` at given conditions; each
+    Evaluates every quantity of ``QUANTITIES`` at given conditions; each
     configuration is solved once per set of conditions (cached).
 
-    The protocol :func:`diagnose` uses (a spec of another machine, such as
-    :class:`thermobear.SpindleModelSpec`, provides the same): ``quantities``
+    The protocol [`diagnose`][thermobear.diagnose] uses (a spec of another machine, such as
+    [`thermobear.SpindleModelSpec`][thermobear.SpindleModelSpec], provides the same): ``quantities``
     (the quantity registry), ``candidate_list(quantities)``,
     ``predict(conditions)``, ``with_setting(add_effects, **options)``,
     ``options``, ``effects``."""
 
-    #: The quantities this model predicts (see :data:`QUANTITIES`).
+    #: The quantities this model predicts (see ``QUANTITIES``).
     quantities = QUANTITIES
 
     def __init__(self, bearing: Any, effects: Optional[Sequence[str]] = None, **options: Any):
@@ -54,6 +57,13 @@ class BearingModelSpec(ModelSpec):
         self.effects = tuple(sorted(eff))
         self.options = {**_THERMAL_DEFAULTS, **_lubrication_options(bearing, options), **options}
         self._cache: dict = {}
+
+    @classmethod
+    def of_model(cls, bearing: Any) -> "BearingModelSpec":
+        """The spec of a [`Bearing`][thermobear.Bearing] as
+        [`thermobear.thermal_state`][thermobear.thermal_state] runs it by default: every effect
+        on, the default options."""
+        return cls(bearing)
 
     def with_setting(self, add_effects: Sequence[str] = (), **options: Any) -> "BearingModelSpec":
         """A copy with effects added and options replaced (shares the cache)."""
@@ -84,7 +94,7 @@ class BearingModelSpec(ModelSpec):
         return fa, fr
 
     def thermal_options(self) -> dict:
-        """The options as :func:`thermobear.thermal_state` keywords (the
+        """The options as [`thermobear.thermal_state`][thermobear.thermal_state] keywords (the
         load scales removed, unset SKF inputs left to their defaults)."""
         return {
             k: v
@@ -94,7 +104,7 @@ class BearingModelSpec(ModelSpec):
 
     def level_candidates(
         self,
-        conditions: "polars.DataFrame",  # noqa: F821
+        conditions: polars.DataFrame,
         min_levels: int = 2,
     ) -> list[Candidate]:
         """One load-scale candidate per axial and per radial load level of
@@ -105,7 +115,7 @@ class BearingModelSpec(ModelSpec):
             "axial_load_scale", ax, allq, "axial load", min_levels
         ) + load_level_candidates("radial_load_scale", ra, allq, "radial load", min_levels)
 
-    def predict(self, conditions: "polars.DataFrame") -> dict[str, np.ndarray]:  # noqa: F821
+    def predict(self, conditions: polars.DataFrame) -> dict[str, np.ndarray]:
         """Every supported quantity at each row of ``conditions``
         (``speed_rpm``, ``axial_n``, ``radial_n``): name -> array."""
         from ..thermal import thermal_stiffness_curve
@@ -150,6 +160,9 @@ class BearingModelSpec(ModelSpec):
 
 
 def _check_option_names(options: dict) -> None:
+    from .registry import current_option_names
+
+    current_option_names(options)
     for k in options:
         level = k.split("@", 1)
         if k in _THERMAL_DEFAULTS or (len(level) == 2 and level[0] in LOAD_SCALE_OPTIONS):
@@ -173,11 +186,11 @@ def _lubrication_options(bearing: Any, options: dict) -> dict:
 
 
 def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, dict]:
-    """The baseline :class:`BearingModelSpec` of a system description
+    """The baseline [`BearingModelSpec`][thermobear.BearingModelSpec] of a system description
     ([bearing], [model] effects, raceway_control, extra_heat_w,
     housing_conductance_scale, churning_oil_fraction, heat_model and
     lubrication; the other thermal options take their
-    :func:`thermobear.thermal_state` defaults) and its [operating]
+    [`thermobear.thermal_state`][thermobear.thermal_state] defaults) and its [operating]
     table (loads for measurements that give none)."""
     from ..bearing import Bearing
     from ..config import load_config, read_toml
@@ -196,3 +209,12 @@ def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, d
             opts[key] = str(mdl[key])
     spec = BearingModelSpec(Bearing.from_toml(text), effects=mdl.get("effects"), **opts)
     return spec, cfg.get("operating", {})
+
+
+def _register() -> None:
+    from ..bearing import Bearing
+
+    register_kind("bearing", Bearing, BearingModelSpec, QUANTITIES)
+
+
+_register()

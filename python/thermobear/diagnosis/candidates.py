@@ -1,18 +1,20 @@
 """Candidates: what could explain a gap between a baseline and the
 measurements -- an effect the baseline leaves out, a miscalibrated input,
-a sensor offset on the measurement side. :class:`Candidate` records, the
-bearing's candidate list and the candidate table (:func:`candidates`)."""
+a sensor offset on the measurement side. ``Candidate`` records, the
+bearing's candidate list and the candidate table
+([`candidates`][thermobear.diagnosis.candidates.candidates])."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ..errors import ConfigError
 from .measurements import QUANTITIES
-from .protocol import ModelSpec
+from .protocol import ModelSpec, as_spec
 from .registry import (
     _HOUSING_MATERIALS,
     _PARAMETERS,
@@ -22,6 +24,11 @@ from .registry import (
     NOT_IN_BEARING,
     SKF_PARAMETERS,
 )
+
+if TYPE_CHECKING:
+    import polars
+
+    from .bearing_spec import BearingModelSpec
 
 
 @dataclass(frozen=True)
@@ -47,13 +54,15 @@ class Candidate:
     relative: bool = False  # measurement offsets: relative (x (1 + v)) or additive
 
 
-def _candidate_list(model: Optional[ModelSpec], quantities: Sequence[str] = ()) -> list[Candidate]:
+def _candidate_list(
+    model: Optional[BearingModelSpec], quantities: Sequence[str] = ()
+) -> list[Candidate]:
     from .. import _native
 
     base_eff = set(model.effects) if model is not None else set()
     opts = model.options if model is not None else _THERMAL_DEFAULTS
-    temps = tuple(q for q in QUANTITIES if q.startswith("temperature_c"))
-    mech = tuple(q for q in QUANTITIES if not q.startswith("temperature_c"))
+    temps = tuple(q for q in QUANTITIES if q.endswith("temperature_c"))
+    mech = tuple(q for q in QUANTITIES if not q.endswith("temperature_c"))
     out = []
     for name, desc, models in _native.effects():
         if name in base_eff:
@@ -124,12 +133,14 @@ def _candidate_list(model: Optional[ModelSpec], quantities: Sequence[str] = ()) 
     return out
 
 
-def _lubrication_bounds(model: Optional[ModelSpec]) -> dict:
+def _lubrication_bounds(model: Optional[BearingModelSpec]) -> dict:
     """f0 and drag oil-fraction bounds of the baseline's lubrication method
     (none without one): option -> (lower, upper)."""
     from .. import _native
 
-    lub = None if model is None else model.options.get("lubrication")
+    if model is None:
+        return {}
+    lub = model.options.get("lubrication")
     if lub is None:
         return {}
     d = _native.lubrication_defaults(str(lub), model.bearing.bearing_type.replace("-", "_"))
@@ -143,7 +154,7 @@ def heat_model_candidates(opts: dict, affects: tuple, skf_inputs: bool = True) -
     """The other heat models (docs/concepts/physics.md §9) as switches
     (role "effect": a heat model the baseline leaves out) and, when the
     baseline uses the SKF-style model, its calibratable inputs (mu_EHL,
-    K_rs; bounds and sources in :data:`SKF_PARAMETERS`) unless
+    K_rs; bounds and sources in ``SKF_PARAMETERS``) unless
     ``skf_inputs`` is false (a model without those options)."""
     base = str(opts.get("heat_model", "palmgren"))
     out = [
@@ -211,12 +222,12 @@ def sensor_gain_candidates(quantities: Sequence[str], table: dict) -> list:
     """The measurement-side gain errors: the reading times (1 + g), one
     per measured quantity (sensor) whose uncertainty is absolute (for
     relative-sigma quantities the relative ``sensor_offset`` already is a
-    gain). Bounds: :data:`SENSOR_GAIN_BOUNDS`."""
+    gain). Bounds: ``SENSOR_GAIN_BOUNDS``."""
     out = []
     for q in quantities:
         if table[q][4]:
             continue
-        b = SENSOR_GAIN_BOUNDS["temperature" if q.startswith("temperature_c") else "other"]
+        b = SENSOR_GAIN_BOUNDS["temperature" if q.endswith("temperature_c") else "other"]
         out.append(
             Candidate(
                 f"sensor_gain:{q}",
@@ -239,13 +250,13 @@ def sensor_gain_candidates(quantities: Sequence[str], table: dict) -> list:
 
 
 def load_level_candidates(
-    option: str, levels: Sequence[float], quantities: tuple, what: str, min_levels: int = 2
+    option: str, levels: ArrayLike, quantities: tuple, what: str, min_levels: int = 2
 ) -> list[Candidate]:
     """One load-scale candidate per non-zero load level
-    (``{option}@{level:g}``, bounds :data:`LOAD_SCALE_BOUNDS`, null 1) when
+    (``{option}@{level:g}``, bounds ``LOAD_SCALE_BOUNDS``, null 1) when
     there are ``min_levels`` or more: a load cell or preload setting off at
     one level only (with one level it is the global scale)."""
-    lv = sorted({float(v) for v in levels if float(v) != 0.0})
+    lv = sorted({float(v) for v in np.ravel(levels) if float(v) != 0.0})
     if len(lv) < min_levels:
         return []
     lo, hi = LOAD_SCALE_BOUNDS
@@ -275,7 +286,7 @@ def sensor_offset_candidates(quantities: Sequence[str], table: dict) -> list:
     out = []
     for q in quantities:
         typ, rel = table[q][3], table[q][4]
-        unit = "K" if q.startswith("temperature_c") else q.rsplit("_", 1)[-1]
+        unit = "K" if q.endswith("temperature_c") else q.rsplit("_", 1)[-1]
         bound = 10.0 * typ if not rel else 0.2
         out.append(
             Candidate(
@@ -300,18 +311,22 @@ def sensor_offset_candidates(quantities: Sequence[str], table: dict) -> list:
 
 def candidates(
     model: Optional[ModelSpec] = None, quantities: Sequence[str] = ()
-) -> "polars.DataFrame":  # noqa: F821
+) -> polars.DataFrame:
     """The candidate registry against a baseline: ``name``, ``kind``
     ("switch" or "parameter"), ``role`` ("effect": a physical term the
     baseline leaves out; "calibration": a baseline input whose value may be
     off; "measurement": a sensor-offset decoy, one per measured quantity in
     ``quantities``), ``side`` ("model" or "measurement"), ``parameter``,
     ``unit``, ``lower``, ``upper`` (physical bounds), ``default`` (the null
-    value: the baseline's), ``description``, ``affects``. Without ``model``
-    the baseline is the default :func:`thermobear.thermal_state` options
-    with no effect switched on (every effect is listed)."""
+    value: the baseline's), ``description``, ``affects``. ``model``: a
+    model spec (bearing or spindle), or a [`Bearing`][thermobear.Bearing] or
+    [`Spindle`][thermobear.Spindle] taken as configured. Without ``model``
+    the baseline is a bearing with the default
+    [`thermobear.thermal_state`][thermobear.thermal_state] options and no effect switched on
+    (every effect is listed)."""
     import polars as pl
 
+    model = None if model is None else as_spec(model)
     table = QUANTITIES if model is None else model.quantities
     for q in quantities:
         if q not in table:
@@ -374,9 +389,9 @@ def _levels(conditions: Any, names: Optional[Sequence[str]]) -> tuple[Any, int]:
             ax.append(float(level))
         elif level and opt == "radial_load_scale":
             ra.append(float(level))
-    n = max(len(ax), len(ra))
+    rows = max(len(ax), len(ra))
     return pl.DataFrame(
-        {"axial_n": ax + [0.0] * (n - len(ax)), "radial_n": ra + [0.0] * (n - len(ra))}
+        {"axial_n": ax + [0.0] * (rows - len(ax)), "radial_n": ra + [0.0] * (rows - len(ra))}
     ), 1
 
 

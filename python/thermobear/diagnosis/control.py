@@ -2,21 +2,21 @@
 measured quantity, ``a x + b x^2`` with ``x`` the speed over the highest
 measured speed (zero at standstill, like every speed-driven effect; two
 parameters per quantity). It is never a verdict of its own: when it explains
-the data as well as the best named candidate (:func:`matching_control`),
+the data as well as the best named candidate (``matching_control``),
 the data cannot tell the known effect from an unknown one, and the verdict
 says so instead of naming it.
 
 Beside the per-quantity terms, a *carrier* control: an additive input of
-the model (:data:`CARRIERS`, e.g. the extra heat at the bearing) given a
+the model (``CARRIERS``, e.g. the extra heat at the bearing) given a
 free smooth speed law ``h(x) = a x + b x^2``, acting through the model's
 own sensitivity of every row to that input (linearised at the setting:
 ``dm_i = S_i h(x_i)``) -- an unknown heat source, seen by every quantity
 the way heat is, with two parameters for all of them.
 
-The rules (:func:`matching_control`): the per-quantity control matches by
+The rules (``matching_control``): the per-quantity control matches by
 BIC (only parsimony can favour a named effect over two free parameters per
 quantity); a carrier matches unless the named set's chi^2 is lower than
-its own by more than :data:`CARRIER_LEAD` (the fit decides, not BIC's
+its own by more than ``CARRIER_LEAD`` (the fit decides, not BIC's
 charge for the carrier's one extra parameter)."""
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ CONTROL_MARGIN = 0.0
 CARRIERS = ("extra_heat_w",)
 
 #: The lead in chi^2 a named set needs over a carrier control to be told
-#: from an unknown source (:func:`matching_control`): the 95 % quantile of
+#: from an unknown source (``matching_control``): the 95 % quantile of
 #: chi^2 with one degree of freedom. Were the unknown source the truth,
 #: the named set's chi^2 lead over it would have mean about -D^2 - 1 and
 #: standard deviation about sqrt(4 D^2 + 2) (D: the distance of the two
@@ -68,8 +68,8 @@ class GenericControl:
 
 
 def generic_control(data, pred: np.ndarray, carriers=None) -> GenericControl:
-    """The better of the per-quantity control (:func:`quantity_control`)
-    and each carrier control (:func:`carrier_control`; ``carriers``: name ->
+    """The better of the per-quantity control (``quantity_control``)
+    and each carrier control (``carrier_control``; ``carriers``: name ->
     d prediction / d input of every row)."""
     best = quantity_control(data, pred)
     for name, slope in (carriers or {}).items():
@@ -161,7 +161,7 @@ def control_matches(ctrl: GenericControl, best: dict, margin: float) -> bool:
 
 def carrier_lead_needed(k_named: int) -> float:
     """The chi^2 lead a named set of ``k_named`` parameters needs over a
-    carrier control (two parameters): :data:`CARRIER_LEAD`, plus one per
+    carrier control (two parameters): ``CARRIER_LEAD``, plus one per
     parameter the named set has beyond the carrier's (each fits about one
     unit of chi^2 of noise)."""
     return CARRIER_LEAD + max(0, k_named - GENERIC_PARAMETERS)
@@ -172,7 +172,7 @@ def explains_as_well(ctrl: GenericControl, row: dict) -> bool:
     setting as ``ctrl``) explains the data about as well as the control
     that matched the accepted set: it passes the screening, does not sit at
     a bound, and the control's lead over it is within
-    :data:`CARRIER_LEAD` -- in chi^2 for a carrier control, in delta-BIC
+    ``CARRIER_LEAD`` -- in chi^2 for a carrier control, in delta-BIC
     for the per-quantity control (its many parameters charged). Such
     candidates are listed beside the accepted ones in an "unresolved"
     verdict: the data cannot tell any of them from the unknown source."""
@@ -188,15 +188,15 @@ def matching_control(data, pred0, chi2_named, k_named, carriers=None, margin=0.0
     ``k_named`` parameters whose fit from the setting ``pred0`` reaches
     ``chi2_named``, or None. Two rules, one per kind of control:
 
-    * the per-quantity control (:func:`quantity_control`; two parameters
+    * the per-quantity control (``quantity_control``; two parameters
       per quantity, flexible enough to absorb any smooth named effect one
       quantity at a time, so only parsimony can favour the named set):
       its delta-BIC no more than ``margin`` below the named set's;
-    * a carrier control (:func:`carrier_control`; an unknown source with
+    * a carrier control (``carrier_control``; an unknown source with
       its own speed law, nesting nearly every named term of the same kind
       whose speed law is smooth, one parameter more): the named set's
       chi^2 no lower than the carrier's by more than
-      :func:`carrier_lead_needed` -- the parameter the carrier pays in BIC
+      ``carrier_lead_needed`` -- the parameter the carrier pays in BIC
       is not counted in the named set's favour: the fit itself must be
       better by more than noise allows (or BIC as above).
 

@@ -1,4 +1,4 @@
-"""Step 2 of :func:`thermobear.diagnose`: identifiability. Each candidate's
+"""Step 2 of [`thermobear.diagnose`][thermobear.diagnose]: identifiability. Each candidate's
 fingerprint, pairwise cosine similarity, look-alike pairs and the extra
 measurement that tells two look-alikes apart."""
 
@@ -55,7 +55,7 @@ def _response(model, st, c, cond, base_options) -> dict:
 def suggest_measurement(model, st, ca, cb, fa, fb, df, base_options, envelope=None):
     """Quantity, speed and axial load where two look-alike fingerprints (b
     scaled to match a on the measured rows) differ most, over all supported
-    quantities inside the operating envelope (:func:`envelope_grid`), in
+    quantities inside the operating envelope (``envelope_grid``), in
     units of the typical uncertainty: (quantity, speed_rpm, axial_n)."""
     from ..errors import ThermobearError
 
@@ -86,7 +86,7 @@ def identifiability(
     curve's slope over sigma on the measured rows): the pairwise cosine
     table (``a``, ``b``, ``cosine``) and the look-alike pairs (|cos| >
     ``lookalike_cosine``) with the quantity and speed that separate them
-    best inside the operating envelope (:func:`suggest_measurement`, when
+    best inside the operating envelope (``suggest_measurement``, when
     ``suggest``)."""
     import polars as pl
 

@@ -1,4 +1,4 @@
-"""Joint calibration (:func:`calibrate`): several data sets at once -- rigs
+"""Joint calibration ([`calibrate`][thermobear.calibrate]): several data sets at once -- rigs
 (each its own model spec), runs, load levels, quantities -- with parameters
 shared by every set or one value per set; up to three candidates calibrated
 together by bounded least squares on the models themselves, with
@@ -20,13 +20,13 @@ identified."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Sequence
+from typing import Any, Protocol, Sequence
 
 import numpy as np
 
 from ..errors import ConfigError, ThermobearError
 from .measurements import prepare_measurements
-from .protocol import check_spec
+from .protocol import as_spec
 from .setting import _predict, _Setting
 from .statistics import fisher_identifiability
 
@@ -37,7 +37,7 @@ _CHI2_95 = 3.841
 
 @dataclass
 class Calibration:
-    """Result of :func:`calibrate`. ``parameters``: one row per calibrated
+    """Result of [`calibrate`][thermobear.calibrate]. ``parameters``: one row per calibrated
     value (``name``, ``set``: the data-set label or "all" when shared,
     ``value``, ``lower_95``, ``upper_95``, ``lower``, ``upper`` (bounds),
     ``null`` (the baseline's), ``at_bound``, ``identified``); ``chi2`` and
@@ -55,6 +55,33 @@ class Calibration:
     not_identified: list
     points: Any
     notes: list = field(default_factory=list)
+
+    def summary(self) -> str:
+        """The calibration in a few lines: each value with its 95 % profile
+        interval and bounds (flagged at a bound or not identified), the fit
+        before and after, the interval stretch and the notes."""
+        lines = [
+            f"calibration of {self.parameters.height} value(s) on {self.n} points: chi^2 "
+            f"{self.chi2_before:.4g} -> {self.chi2:.4g} (phi {self.phi:.3g}, condition number "
+            f"{self.condition_number:.3g})"
+        ]
+        for r in self.parameters.iter_rows(named=True):
+            flags = ([" at its bound"] if r["at_bound"] else []) + (
+                [" not identified"] if not r["identified"] else []
+            )
+            lines.append(
+                f"  {r['name']} [{r['set']}] = {r['value']:.4g}  95 % [{r['lower_95']:.4g}, "
+                f"{r['upper_95']:.4g}]  bounds [{r['lower']:.4g}, {r['upper']:.4g}], null "
+                f"{r['null']:.4g}{''.join(flags)}"
+            )
+        lines += [f"note: {n}" for n in self.notes]
+        return "\n".join(lines)
+
+    def __repr__(self) -> str:
+        values = ", ".join(
+            f"{r['name']}={r['value']:.4g}" for r in self.parameters.iter_rows(named=True)
+        )
+        return f"Calibration({values}; chi2 {self.chi2_before:.4g} -> {self.chi2:.4g}, n={self.n})"
 
 
 @dataclass(frozen=True)
@@ -78,8 +105,7 @@ def _sets(datasets) -> list[tuple[str, Any, Any]]:
     for label, pair in items:
         if not isinstance(pair, (tuple, list)) or len(pair) != 2:
             raise ConfigError(f"invalid datasets[{label!r}] = {pair!r}: give (model, measured)")
-        check_spec(pair[0])
-        out.append((str(label), pair[0], pair[1]))
+        out.append((str(label), as_spec(pair[0]), pair[1]))
     if not out:
         raise ConfigError("invalid datasets = []: give at least one (model, measured) pair")
     return out
@@ -114,6 +140,18 @@ def _slots(sets, data, parameters, per_set) -> list[_Slot]:
     return slots
 
 
+class _Fittable(Protocol):
+    """What ``_least_squares`` and ``_profile`` read of a problem: the
+    bounds of the values and the residual/sigma against them."""
+
+    lo: np.ndarray
+    hi: np.ndarray
+
+    def resid(self, theta: np.ndarray) -> np.ndarray: ...
+
+    def chi2(self, theta: np.ndarray) -> float: ...
+
+
 class _Problem:
     """The stacked residual of every set against the calibrated values."""
 
@@ -144,7 +182,7 @@ class _Problem:
         return float(r @ r)
 
 
-def _least_squares(prob: _Problem, x0, free: np.ndarray, fixed: np.ndarray):
+def _least_squares(prob: _Fittable, x0, free: np.ndarray, fixed: np.ndarray):
     """Bounded least squares over the ``free`` slots (the others at
     ``fixed``); returns (theta, chi^2, jacobian)."""
     from scipy.optimize import least_squares
@@ -180,7 +218,7 @@ def _best_fit(prob: _Problem):
     return best
 
 
-def _profile(prob: _Problem, theta, chi_min, j, thr, halfwidth=None) -> tuple[float, float]:
+def _profile(prob: _Fittable, theta, chi_min, j, thr, halfwidth=None) -> tuple[float, float]:
     """The 95 % profile-likelihood interval of slot ``j``: the others
     re-calibrated at each trial value; an edge is the bound when the
     profile stays below the threshold up to it. ``halfwidth``: a guess of
@@ -219,14 +257,17 @@ def _profile(prob: _Problem, theta, chi_min, j, thr, halfwidth=None) -> tuple[fl
 
 
 def calibrate(datasets, parameters: Sequence[str], per_set: Sequence[str] = ()) -> Calibration:
-    """Calibrate up to three candidates (names from :func:`candidates` of
+    """Calibrate up to three candidates (names from
+    [`candidates`][thermobear.diagnosis.candidates.candidates] of
     each set's model: parameters, not switches) on several data sets at
     once. ``datasets``: a list or a dict (label -> pair) of ``(model,
     measured)`` pairs -- a model spec (one per rig; the same spec for runs or
-    load levels of one rig) and anything :func:`load_measurements` reads;
+    load levels of one rig; a [`Bearing`][thermobear.Bearing] or
+    [`Spindle`][thermobear.Spindle] stands for its spec as configured) and anything
+    [`load_measurements`][thermobear.load_measurements] reads;
     ``per_set``: the names calibrated with a value of their own in each set
     (e.g. a sensor offset per run), the others shared by all sets. Returns a
-    :class:`Calibration` (see the module docstring for the statistics)."""
+    [`Calibration`][thermobear.Calibration] (see the module docstring for the statistics)."""
     sets = _sets(datasets)
     data = [prepare_measurements(m, spec.quantities, None) for _, spec, m in sets]
     slots = _slots(sets, data, list(parameters), list(per_set))

@@ -1,5 +1,5 @@
-"""Step 0 of :func:`thermobear.diagnose`: the measured data. The bearing's
-quantity registry (:data:`QUANTITIES`), reading and checking a tidy
+"""Step 0 of [`thermobear.diagnose`][thermobear.diagnose]: the measured data. The bearing's
+quantity registry (``QUANTITIES``), reading and checking a tidy
 measurement table, typical uncertainties, synthetic measurements for tests,
 and the held-out points."""
 
@@ -7,11 +7,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
 
 import numpy as np
 
 from ..errors import ConfigError, DataError
+
+if TYPE_CHECKING:
+    import polars
 
 #: Supported measured quantities: model column, scale to the quantity's
 #: unit, plausible range (lo, hi) and a typical measurement uncertainty
@@ -19,42 +22,135 @@ from ..errors import ConfigError, DataError
 #: measurement suggestion): thermocouples +-0.5 K, stiffness and heat 2 %.
 QUANTITIES: dict[str, tuple[str, float, tuple[float, float], float, bool]] = {
     # name: (column, scale, (lo, hi), typical sigma, sigma is relative)
-    "temperature_c:Ts": ("shaft_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
-    "temperature_c:Ti": ("inner_ring_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
-    "temperature_c:Tb": ("ball_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
-    "temperature_c:To": ("outer_ring_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
-    "temperature_c:Th": ("housing_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
-    "radial_stiffness_n_per_m": ("radial_stiffness_n_per_m", 1.0, (1e5, 1e11), 0.02, True),
-    "axial_stiffness_n_per_m": ("axial_stiffness_n_per_m", 1.0, (1e5, 1e11), 0.02, True),
+    "shaft_temperature_c": ("shaft_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
+    "inner_ring_temperature_c": ("inner_ring_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
+    "ball_temperature_c": ("ball_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
+    "outer_ring_temperature_c": ("outer_ring_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
+    "housing_temperature_c": ("housing_temperature_c", 1.0, (-60.0, 250.0), 0.5, False),
+    "radial_stiffness_seed_n_per_m": (
+        "radial_stiffness_seed_n_per_m", 1.0, (1e5, 1e11), 0.02, True,
+    ),
+    "axial_stiffness_seed_n_per_m": ("axial_stiffness_seed_n_per_m", 1.0, (1e5, 1e11), 0.02, True),
+    "k_xx_n_per_m": ("k_xx_n_per_m", 1.0, (1e5, 1e11), 0.02, True),
+    "k_zz_n_per_m": ("k_zz_n_per_m", 1.0, (1e5, 1e11), 0.02, True),
     "heat_w": ("heat_w", 1.0, (0.0, 1e5), 0.02, True),
-    "axial_displacement_um": ("axial_displacement_mm", 1000.0, (-1e4, 1e4), 0.5, False),
+    "axial_displacement_um": ("axial_displacement_um", 1.0, (-1e4, 1e4), 0.5, False),
     "inner_contact_angle_deg": ("inner_contact_angle_max_deg", 1.0, (0.0, 90.0), 0.2, False),
+}  # fmt: skip
+
+#: Older quantity names -> the current ones (accepted with a
+#: ``DeprecationWarning`` for one release).
+RENAMED_QUANTITIES: dict[str, str] = {
+    "temperature_c:Ts": "shaft_temperature_c",
+    "temperature_c:Ti": "inner_ring_temperature_c",
+    "temperature_c:Tb": "ball_temperature_c",
+    "temperature_c:To": "outer_ring_temperature_c",
+    "temperature_c:Th": "housing_temperature_c",
+    "radial_stiffness_n_per_m": "radial_stiffness_seed_n_per_m",
+    "axial_stiffness_n_per_m": "axial_stiffness_seed_n_per_m",
+    "temperature_c:front_outer": "front_outer_ring_temperature_c",
+    "temperature_c:rear_outer": "rear_outer_ring_temperature_c",
+    "temperature_c:front_inner": "front_inner_ring_temperature_c",
+    "temperature_c:rear_inner": "rear_inner_ring_temperature_c",
+    "temperature_c:front_housing": "front_housing_temperature_c",
+    "temperature_c:rear_housing": "rear_housing_temperature_c",
 }
 
+#: Quantity registries whose operating condition is a preload (``preload_n``
+#: column; a spindle's) rather than an axial load (a single bearing's).
+PRELOAD_REGISTRIES: list[dict] = []
 
-def load_measurements(data: Any, quantities: Optional[dict] = None) -> "polars.DataFrame":  # noqa: F821
+
+def current_quantity(name: str, stacklevel: int = 3) -> str:
+    """The current name of a quantity (an older one warns)."""
+    new = RENAMED_QUANTITIES.get(name)
+    if new is None:
+        return name
+    from .._deprecation import warn_renamed
+
+    warn_renamed(f"quantity {name}", new, stacklevel=stacklevel)
+    return new
+
+
+def _current_quantities(df: Any) -> Any:
+    """The ``quantity`` column with the current names (older ones warn once
+    each)."""
+    import polars as pl
+
+    if "quantity" not in df.columns:
+        return df
+    df = df.with_columns(pl.col("quantity").cast(pl.Utf8))
+    old = [q for q in df["quantity"].unique().to_list() if q in RENAMED_QUANTITIES]
+    if not old:
+        return df
+    for q in sorted(old):
+        current_quantity(q, stacklevel=5)
+    return df.with_columns(pl.col("quantity").replace(RENAMED_QUANTITIES))
+
+
+def load_measurements(
+    data: Any, quantities: Optional[dict] = None, *, model: Any = None
+) -> polars.DataFrame:
     """Read and check a tidy measurement table (CSV or parquet path, or a
-    polars/pandas frame). ``quantities``: the quantity registry of the model
-    the data are for (default :data:`QUANTITIES`, the single bearing's; a
-    model spec's is its ``quantities`` attribute).
+    polars/pandas frame) for a bearing or a spindle. The model the data are
+    for: ``model`` (a model spec, a [`Bearing`][thermobear.Bearing] or
+    [`Spindle`][thermobear.Spindle], or the kind ``"bearing"`` /
+    ``"spindle"``), or ``quantities`` (a quantity registry, e.g. a spec's
+    ``quantities`` attribute); given neither, the kind whose quantities
+    name every quantity in the table (the spindle's when both do and the
+    table has a ``preload_n`` column; otherwise the bearing's,
+    ``QUANTITIES``).
 
     Columns: ``speed_rpm``; ``axial_n`` or ``preload_n`` (the preload is the
     axial load of a single bearing); optional ``radial_n`` (default 0);
-    ``quantity`` (one of :data:`QUANTITIES`); ``value``; optional ``sigma``
+    ``quantity`` (one of ``QUANTITIES``); ``value``; optional ``sigma``
     (same unit as the value; default: the quantity's typical uncertainty);
-    optional ``run`` (label). Raises :class:`DataError` for a missing column,
+    optional ``run`` (label). Raises [`DataError`][thermobear.DataError] for a missing column,
     an unknown quantity, a non-numeric, NaN or infinite value, a sigma <= 0,
     a negative speed, and values outside the quantity's plausible range: a
     ``temperature_c`` quantity whose values are all 200-500 is reported as
     given in kelvin; stiffness must be 1e5-1e11 N/m (values below look like
     N/um), heat 0-1e5 W, contact angle 0-90 deg.
     """
-    df = _read_table(data)
-    df = _operating_columns(df)
+    df = _current_quantities(_read_table(data))
+    table = _registry_for(df, quantities, model)
+    preload = any(table is t for t in PRELOAD_REGISTRIES)
+    df = _operating_columns(_preload_column(df) if preload else df)
     df = _numeric_columns(df)
-    table = QUANTITIES if quantities is None else quantities
     df = _checked_quantities(df, table)
-    return _with_sigma_and_run(df, table)
+    df = _with_sigma_and_run(df, table)
+    return df.rename({"axial_n": "preload_n"}) if preload else df
+
+
+def _preload_column(df: Any) -> Any:
+    """A spindle table: its preload is ``preload_n``; an older ``axial_n``
+    column for it warns and is read as ``preload_n``."""
+    if "axial_n" in df.columns and "preload_n" not in df.columns:
+        from .._deprecation import warn_renamed
+
+        what = "the preload column of spindle data"
+        warn_renamed("axial_n", "preload_n", stacklevel=4, what=what)
+        df = df.rename({"axial_n": "preload_n"})
+    return df
+
+
+def _registry_for(df: Any, quantities: Optional[dict], model: Any) -> dict:
+    """The quantity registry a table is checked against: ``quantities``,
+    else ``model``'s, else the kind recognised from the table's quantities
+    (``thermobear.diagnosis.protocol.kind_of_quantities``)."""
+    from .protocol import MODEL_KINDS, kind_of_quantities, quantities_of
+
+    if quantities is not None and model is not None:
+        raise ConfigError("invalid model: give model or quantities, not both")
+    if quantities is not None:
+        return quantities
+    if model is not None:
+        return quantities_of(model)
+    if "quantity" not in df.columns or not MODEL_KINDS:
+        return QUANTITIES  # the checks name the missing column
+    names = [str(q) for q in df["quantity"].unique().to_list()]
+    kind = kind_of_quantities(names, has_preload="preload_n" in df.columns)
+    return MODEL_KINDS[kind][2]
 
 
 def _read_table(data: Any) -> Any:
@@ -128,10 +224,12 @@ def _checked_quantities(df: Any, table: dict) -> Any:
     df = df.with_columns(pl.col("quantity").cast(pl.Utf8))
     for q in df["quantity"].unique().to_list():
         if q not in table:
-            raise DataError(f"invalid quantity = {q!r}: known: {', '.join(table)}")
+            raise DataError(
+                f"invalid quantity = {q!r}: known: {', '.join(table)}{_other_kind_hint(q, table)}"
+            )
         v = df.filter(pl.col("quantity") == q)["value"].to_numpy()
         lo, hi = table[q][2]
-        if q.startswith("temperature_c") and np.all((v > 200.0) & (v < 500.0)):
+        if q.endswith("temperature_c") and np.all((v > 200.0) & (v < 500.0)):
             raise DataError(
                 f"invalid value = {v[0]} for {q}: looks like kelvin; give deg C (subtract 273.15)"
             )
@@ -139,6 +237,16 @@ def _checked_quantities(df: Any, table: dict) -> Any:
             w = v[(v < lo) | (v > hi)][0]
             raise DataError(f"invalid value = {w} for {q}: outside the plausible {lo:g}..{hi:g}")
     return df
+
+
+def _other_kind_hint(quantity: str, table: dict) -> str:
+    """A hint naming the model kind that knows ``quantity`` (empty when none)."""
+    from .protocol import MODEL_KINDS
+
+    for kind, (_, _, other) in MODEL_KINDS.items():
+        if other is not table and quantity in other:
+            return f"; {quantity!r} is a {kind} quantity: give model={kind!r} or a {kind} model"
+    return ""
 
 
 def _with_sigma_and_run(df: Any, table: dict) -> Any:
@@ -168,18 +276,19 @@ def typical_sigma(table: dict, quantities: Sequence[str], values: np.ndarray) ->
 
 def synthetic_measurements(
     truth: Any,
-    conditions: "polars.DataFrame",  # noqa: F821
+    conditions: polars.DataFrame,
     noise: float = 1.0,
     seed: int = 0,
-) -> "polars.DataFrame":  # noqa: F821
+) -> polars.DataFrame:
     """Synthetic "measurements" for testing a diagnosis: ``truth``'s
     prediction of each row of ``conditions`` (operating columns and
     ``quantity``; ``preload_n`` may stand for ``axial_n``) plus Gaussian
     noise of ``noise`` times the quantity's typical uncertainty
-    (:func:`typical_sigma` over ``truth.quantities``), with that sigma as
+    (``typical_sigma`` over ``truth.quantities``), with that sigma as
     the ``sigma`` column; reproducible by ``seed``."""
     import polars as pl
 
+    conditions = _current_quantities(conditions)
     cond = conditions
     if "preload_n" in cond.columns:
         cond = cond.rename({"preload_n": "axial_n"})
@@ -193,13 +302,20 @@ def synthetic_measurements(
     )
 
 
-def holdout_mask(df, holdout) -> np.ndarray:
+def holdout_mask(
+    df: polars.DataFrame, holdout: Union[str, float, Sequence[str], None]
+) -> np.ndarray:
     speed = df["speed_rpm"].to_numpy()
     if holdout is None or holdout == "none":
         return np.zeros(len(speed), dtype=bool)
+    if isinstance(holdout, bool):
+        raise ConfigError(
+            f"invalid holdout = {holdout}: 'highest_speeds', a fraction of the distinct speeds, "
+            "run label(s) or None"
+        )
     if isinstance(holdout, str) and holdout == "highest_speeds":
         holdout = 0.25
-    if isinstance(holdout, (float, int)) and not isinstance(holdout, bool):
+    if isinstance(holdout, (float, int)):
         frac = float(holdout)
         if not 0.0 < frac < 1.0:
             raise ConfigError(f"invalid holdout = {holdout}: a fraction in (0, 1)")
@@ -226,11 +342,11 @@ def holdout_mask(df, holdout) -> np.ndarray:
 MAX_FOLDS = 20
 
 
-def cv_folds(df) -> np.ndarray:
+def cv_folds(df: polars.DataFrame) -> np.ndarray:
     """Cross-validation fold of each row: one fold per operating cell (a
     speed, load and run: every quantity measured there is held out
     together, so a fold removes a whole condition, not one sensor), cells in
-    order of speed, then load and run; beyond :data:`MAX_FOLDS` cells the
+    order of speed, then load and run; beyond ``MAX_FOLDS`` cells the
     folds take the cells in turn (interleaved, so that every fold spans the
     speed range)."""
     keys = list(
@@ -253,7 +369,7 @@ class MeasuredData:
     each row's ``quantity``, value ``y`` and ``sigma`` ``s``, the operating
     conditions ``cond`` (``speed_rpm``, ``axial_n``, ``radial_n``), the
     held-out mask ``held`` (the extrapolation check), the cross-validation
-    ``folds`` (:func:`cv_folds`) and whether the table gave its sigmas."""
+    ``folds`` (``cv_folds``) and whether the table gave its sigmas."""
 
     df: Any
     quantity: np.ndarray
@@ -298,11 +414,13 @@ class MeasuredData:
 
 def prepare_measurements(measured: Any, quantities: dict, holdout: Any) -> MeasuredData:
     """Step 0: read and check ``measured`` against a quantity registry
-    (:func:`load_measurements`), split off the held-out points of the
-    extrapolation check (:func:`holdout_mask`) and assign the
-    cross-validation folds (:func:`cv_folds`)."""
+    ([`load_measurements`][thermobear.load_measurements]), split off the held-out points of the
+    extrapolation check (``holdout_mask``) and assign the
+    cross-validation folds (``cv_folds``)."""
     given = _has_sigma(measured)
     df = load_measurements(measured, quantities)
+    if "preload_n" in df.columns:  # a spindle's: the conditions keep one name inside
+        df = df.rename({"preload_n": "axial_n"})
     return MeasuredData(
         df,
         df["quantity"].to_numpy(),

@@ -1,4 +1,4 @@
-"""The robust outlier audit of :func:`thermobear.diagnose`: single points
+"""The robust outlier audit of [`thermobear.diagnose`][thermobear.diagnose]: single points
 that no smooth model of their series can reach.
 
 The rule, on the residual (value - model) / sigma of the best-fit setting:

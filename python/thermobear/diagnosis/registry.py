@@ -3,9 +3,13 @@ calibratable inputs with their physical bounds and baseline values."""
 
 from __future__ import annotations
 
-from typing import Optional
+from typing import TYPE_CHECKING, Any, Optional
 
+from .._types import EffectKind
 from ..errors import ConfigError
+
+if TYPE_CHECKING:
+    import polars
 
 # Parameter candidates: (name, option, unit, lo, hi, offset?, description).
 # Bounds: f0 0.5-6 spans Palmgren's f0 for oil-air / oil-mist (1-2) up to
@@ -24,7 +28,7 @@ from ..errors import ConfigError
 # bath is the f0 range above; at 5 % a 7008C at 18,000 rpm dissipates
 # ~90 W of ball drag, about half its total friction heat). With a
 # lubrication method in the baseline (``lubrication="jet"`` ...) the f0 and X
-# bounds are the method's (:func:`thermobear.lubrication_defaults`,
+# bounds are the method's (``thermobear.lubrication_defaults``,
 # docs/concepts/physics.md §9); applied-load scales 0.7-1.3 (a load cell or
 # a preload set by spring length or spacer grinding off by up to 30 %: the
 # spread of preload measured on assembled spindles against the catalogue
@@ -33,7 +37,8 @@ _PARAMETERS = (
     # (name, option, unit, lower, upper, offset?, role, description)
     ("lubrication_factor_f0", "lubrication_factor_f0", "1", 0.5, 6.0, False, "calibration",
      "viscous friction moment scale (Palmgren f0)"),
-    ("spin_friction_coefficient", "spin_friction", "1", 0.0, 0.3, False, "calibration",
+    ("spin_friction_coefficient", "spin_friction_coefficient", "1", 0.0, 0.3, False,
+     "calibration",
      "spin friction coefficient mu_s (needs the spin_friction effect on)"),
     ("oil_air_temperature_offset_k", "oil_air_temperature_c", "K", -10.0, 20.0, True,
      "calibration", "oil-air (cooling) temperature differs from the assumed one"),
@@ -78,10 +83,12 @@ NOT_IN_BEARING = "not in the single-bearing model"
 _HOUSING_MATERIALS = ("aluminium", "cast-iron", "shaft-steel")
 
 
-_THERMAL_DEFAULTS = {
+#: The default of each thermal option of a bearing model: a number, a name,
+#: or None (left unset: thermal_state's own default).
+_THERMAL_DEFAULTS: dict[str, Any] = {
     "lubricant": "e-drive ATF",
     "lubrication_factor_f0": 1.0,
-    "spin_friction": 0.06,
+    "spin_friction_coefficient": 0.05,
     "oil_air_temperature_c": 28.0,
     "ambient_temperature_c": 26.0,
     "housing_material": "aluminium",
@@ -103,8 +110,8 @@ LOAD_SCALE_OPTIONS = ("axial_load_scale", "radial_load_scale")
 
 
 #: Effects that are switches and also have a calibratable coefficient:
-#: name -> (option, unit, lower, upper); bounds as in :data:`_PARAMETERS`.
-_SWITCH_COEFFICIENTS = {"spin_friction": ("spin_friction", "1", 0.0, 0.3)}
+#: name -> (option, unit, lower, upper); bounds as in ``_PARAMETERS``.
+_SWITCH_COEFFICIENTS = {"spin_friction": ("spin_friction_coefficient", "1", 0.0, 0.3)}
 
 
 #: Switches that are off in the default models (the rotor's default leaves
@@ -112,7 +119,7 @@ _SWITCH_COEFFICIENTS = {"spin_friction": ("spin_friction", "1", 0.0, 0.3)}
 _OFF_BY_DEFAULT = ("unbalanced_magnetic_pull",)
 
 
-def effect_registry(kind: Optional[str] = None) -> "polars.DataFrame":  # noqa: F821
+def effect_registry(kind: Optional[EffectKind] = None) -> polars.DataFrame:
     """The effects registry (``thermobear.effects()``): one row per physical
     effect. ``name``; ``kind``: "switch" (a named effect, on when listed in
     ``effects=[...]``), "term" (an input whose ``off`` value leaves the
@@ -155,3 +162,19 @@ def effect_registry(kind: Optional[str] = None) -> "polars.DataFrame":  # noqa: 
         orient="row",
     )  # fmt: skip
     return df if kind is None else df.filter(pl.col("kind") == kind)
+
+
+#: Older option names of the model specs -> the current ones.
+RENAMED_OPTIONS = {"spin_friction": "spin_friction_coefficient"}
+
+
+def current_option_names(options: dict) -> None:
+    """Rename older option names in ``options`` in place (each warns)."""
+    from .._deprecation import warn_renamed
+
+    for old, new in RENAMED_OPTIONS.items():
+        if old in options:
+            if new in options:
+                raise TypeError(f"got both `{old}` (deprecated) and `{new}`; pass only `{new}`")
+            warn_renamed(old, new, stacklevel=5)
+            options[new] = options.pop(old)

@@ -1,4 +1,5 @@
-"""The result of :func:`thermobear.diagnose`: :class:`Diagnosis`."""
+"""The result of [`thermobear.diagnose`][thermobear.diagnose]:
+[`Diagnosis`][thermobear.Diagnosis]."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ from .verdict import _unit
 
 @dataclass
 class Diagnosis:
-    """Result of :func:`diagnose` (tables are polars DataFrames).
+    """Result of [`diagnose`][thermobear.diagnose] (tables are polars DataFrames).
 
     ``audit``: residual per quantity and speed band of the baseline
     (``n``, ``mean_residual_sigma``, ``rms_residual_sigma``) with the

@@ -1,4 +1,4 @@
-"""Step 3 of :func:`thermobear.diagnose`: each candidate added alone to
+"""Step 3 of [`thermobear.diagnose`][thermobear.diagnose]: each candidate added alone to
 the baseline and calibrated within its bounds on all the points -- its
 prediction curve over a grid of values, the calibrated value, the 95 %
 profile-likelihood interval, BIC and AICc, the cross-validated chi^2 (folds
@@ -253,13 +253,13 @@ def candidate_curves(model, st, pool, data, base_options):
 
 def screen(curves, data, chi_base, chi_held, delta_bic_min, k_accepted: int = 0):
     """One screening round: each curve calibrated alone on all the points
-    (:func:`_fit`) and scored against the current setting's chi^2
+    (``_fit``) and scored against the current setting's chi^2
     ``chi_base`` (all points) and held-out chi^2 ``chi_held``; ``k_accepted``
     parameters are in the setting already (for AICc). A row passes with
     delta-BIC >= ``delta_bic_min``, a lower cross-validated chi^2 than the
-    setting's (:func:`cv_chi2`) and (for a parameter) a 95 % interval inside
+    setting's (``cv_chi2``) and (for a parameter) a 95 % interval inside
     the bounds that excludes the null value. The extrapolation check
-    (calibrated without the held-out points, :func:`extrapolation_chi2`) is
+    (calibrated without the held-out points, ``extrapolation_chi2``) is
     reported, not required. Returns (rows, fits by name)."""
     rows, fits = [], {}
     everything = np.ones(data.n, dtype=bool)

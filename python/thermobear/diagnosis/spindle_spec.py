@@ -1,18 +1,21 @@
-"""The discrepancy workflow of :mod:`thermobear.diagnosis` on a motorized
-spindle (issue 6, seed B): :class:`SpindleModelSpec` is the spindle's model
-in the protocol :func:`thermobear.diagnose` uses (``predict(conditions)``
+"""The discrepancy workflow of [`thermobear.diagnosis`][thermobear.diagnosis] on a motorized
+spindle (seed B): [`SpindleModelSpec`][thermobear.SpindleModelSpec] is the spindle's model
+in the protocol [`thermobear.diagnose`][thermobear.diagnose] uses (``predict(conditions)``
 over every supported quantity, ``with_setting(effects, **options)`` sharing
 one cache, ``options``, ``effects``), with its own quantity and candidate
-registry; :func:`diagnose_spindle` runs the unchanged screening, acceptance
-and gap machinery of :mod:`thermobear.diagnosis` with that registry.
+registry; [`thermobear.diagnose`][thermobear.diagnose], given this spec or a
+[`Spindle`][thermobear.Spindle], runs the unchanged screening, acceptance and
+gap machinery of [`thermobear.diagnosis`][thermobear.diagnosis] with that registry.
 
-Quantities (:data:`SPINDLE_QUANTITIES`): outer-ring (and other node)
+Quantities (``SPINDLE_QUANTITIES``): outer-ring (and other node)
 temperatures of the front and rear bearings from
-:meth:`thermobear.Spindle.thermal_state`, the axial thermal growth, and the
-shaft-end vibration velocity RMS from :func:`thermobear.vibration`, coupled
+[`thermobear.Spindle.thermal_state`][thermobear.Spindle.thermal_state], the
+axial thermal growth, and the shaft-end vibration velocity RMS from
+[`thermobear.vibration`][thermobear.vibration], coupled
 (thermal raceway offsets, A-38) exactly when a thermal-expansion effect is
 on. Conditions: ``speed_rpm`` and ``preload_n`` (stored as ``axial_n`` by
-:func:`thermobear.load_measurements`; a spindle's axial load is its preload).
+[`thermobear.load_measurements`][thermobear.load_measurements]; a spindle's
+axial load is its preload).
 
 Candidates: every effect the baseline leaves off as a switch, plus
 ``thermal_displacement`` (the five thermal-expansion effects together:
@@ -28,7 +31,7 @@ absolute-sigma quantities) a sensor gain.
 from __future__ import annotations
 
 from importlib import resources
-from typing import Any, Optional, Sequence, Union
+from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
 
 import numpy as np
 
@@ -42,11 +45,14 @@ from .candidates import (
     sensor_offset_candidates,
 )
 from .candidates import candidates as _candidate_table
-from .measurements import load_measurements
-from .protocol import ModelSpec
+from .measurements import PRELOAD_REGISTRIES, load_measurements
+from .protocol import ModelSpec, register_kind
 from .result import Diagnosis
 from .screening import _GRID
 from .workflow import diagnose
+
+if TYPE_CHECKING:
+    import polars
 
 __all__ = [
     "SPINDLE_QUANTITIES",
@@ -72,24 +78,25 @@ _GROUP = "thermal_displacement"
 
 _T_RANGE = (-60.0, 250.0)
 #: name: (model column, scale, plausible range, typical sigma, relative?) --
-#: the layout of :data:`thermobear.diagnosis.QUANTITIES`. Thermocouples
+#: the layout of ``thermobear.diagnosis.QUANTITIES``. Thermocouples
 #: +-0.5 K; laser-Doppler vibrometer velocity 5 % (the Polytec OFV-505 of
 #: seed B's test; 5 % is our assumption for the whole chain, the paper gives
 #: none); axial growth 0.5 um (capacitive probe, assumed); operating
 #: preload of the front pair 2 % (a load washer or strain-gauged spacer in
 #: the preload path, assumed).
 SPINDLE_QUANTITIES: dict[str, tuple[str, float, tuple[float, float], float, bool]] = {
-    "temperature_c:front_outer": ("front_outer_c", 1.0, _T_RANGE, 0.5, False),
-    "temperature_c:rear_outer": ("rear_outer_c", 1.0, _T_RANGE, 0.5, False),
-    "temperature_c:front_inner": ("front_inner_c", 1.0, _T_RANGE, 0.5, False),
-    "temperature_c:rear_inner": ("rear_inner_c", 1.0, _T_RANGE, 0.5, False),
-    "temperature_c:front_housing": ("housing_front_c", 1.0, _T_RANGE, 0.5, False),
-    "temperature_c:rear_housing": ("housing_rear_c", 1.0, _T_RANGE, 0.5, False),
+    "front_outer_ring_temperature_c": ("front_outer_ring_temperature_c", 1.0, _T_RANGE, 0.5, False),
+    "rear_outer_ring_temperature_c": ("rear_outer_ring_temperature_c", 1.0, _T_RANGE, 0.5, False),
+    "front_inner_ring_temperature_c": ("front_inner_ring_temperature_c", 1.0, _T_RANGE, 0.5, False),
+    "rear_inner_ring_temperature_c": ("rear_inner_ring_temperature_c", 1.0, _T_RANGE, 0.5, False),
+    "front_housing_temperature_c": ("front_housing_temperature_c", 1.0, _T_RANGE, 0.5, False),
+    "rear_housing_temperature_c": ("rear_housing_temperature_c", 1.0, _T_RANGE, 0.5, False),
     "axial_growth_um": ("axial_growth_um", 1.0, (-1e4, 1e4), 0.5, False),
     "operating_preload_n": ("operating_preload_n", 1.0, (0.0, 1e5), 0.02, True),
     "velocity_rms_mm_s": ("velocity_rms_mm_s", 1.0, (0.0, 1e3), 0.05, True),
 }
 _VIB = "velocity_rms_mm_s"
+PRELOAD_REGISTRIES.append(SPINDLE_QUANTITIES)  # spindle data state a preload_n
 
 #: Options of the spindle model and their bounds as candidates. Spin
 #: friction coefficient 0-0.3 as in thermobear.diagnosis (boundary to dry
@@ -112,7 +119,7 @@ RUNOUT_BOUNDS_UM = (0.0, 50.0)
 #: factor (same bounds as the bearing's load scales).
 PRELOAD_SCALE_BOUNDS = (0.7, 1.3)
 _OPTIONS = (
-    "spin_friction",
+    "spin_friction_coefficient",
     "preload_kind",
     "spring_rate_n_per_um",
     "unbalance_grade",
@@ -127,10 +134,10 @@ _VIBRATION_ONLY = ("unbalance_grade", "runout_um")
 
 
 class SpindleModelSpec(ModelSpec):
-    """The baseline model of a spindle: a :class:`~thermobear.Spindle`,
+    """The baseline model of a spindle: a [`Spindle`][thermobear.Spindle],
     ``effects`` (names, or ``"thermal_displacement"`` for the five
     thermal-expansion effects; None = every effect) and options
-    ``spin_friction`` (coefficient), ``preload_kind`` ("rigid" or "spring"),
+    ``spin_friction_coefficient``, ``preload_kind`` ("rigid" or "spring"),
     ``spring_rate_n_per_um`` and ``unbalance_grade`` (ISO 21940 grade of the
     rotor, mm/s; default G2.5) -- each defaults to the spindle's own --,
     ``preload_scale`` (the stated preload times this; per level
@@ -138,9 +145,9 @@ class SpindleModelSpec(ModelSpec):
     vibration probe, default 0), ``heat_model``, ``lubrication``,
     ``churning_oil_fraction`` (docs/concepts/physics.md §9).
     Each configuration, preload and speed is solved once (cached, shared by
-    the copies of :meth:`with_setting`)."""
+    the copies of [`with_setting`][thermobear.SpindleModelSpec.with_setting])."""
 
-    #: The quantities this model predicts (:data:`SPINDLE_QUANTITIES`).
+    #: The quantities this model predicts (``SPINDLE_QUANTITIES``).
     quantities = SPINDLE_QUANTITIES
 
     def candidate_list(self, quantities: Sequence[str] = ()) -> list[Candidate]:
@@ -158,7 +165,7 @@ class SpindleModelSpec(ModelSpec):
         self._known = tuple(n for n, *_ in _native.effects())
         self.effects = self._expand(list(self._known) if effects is None else effects)
         defaults = {
-            "spin_friction": _default_spin_friction(spindle),
+            "spin_friction_coefficient": _default_spin_friction(spindle),
             "preload_kind": spindle.preload_kind,
             "spring_rate_n_per_um": spindle.spring_rate_n_per_um,
             "unbalance_grade": 2.5,
@@ -171,6 +178,15 @@ class SpindleModelSpec(ModelSpec):
         self.options = {**defaults, **options}
         _check_options(self.options)
         self._cache: dict = {}
+
+    @classmethod
+    def of_model(cls, spindle: Any) -> "SpindleModelSpec":
+        """The spec of a [`Spindle`][thermobear.Spindle] as configured: its own
+        effects ([`with_options`][thermobear.Spindle.with_options]), the spindle's
+        options."""
+        if not isinstance(spindle, Spindle):
+            raise ConfigError(f"invalid spindle = {spindle!r}: give a thermobear.Spindle")
+        return cls(spindle, effects=list(spindle._native.effects))
 
     def _expand(self, effects: Sequence[str]) -> tuple[str, ...]:
         out: set[str] = set()
@@ -218,7 +234,7 @@ class SpindleModelSpec(ModelSpec):
 
     def level_candidates(
         self,
-        conditions: "polars.DataFrame",  # noqa: F821
+        conditions: polars.DataFrame,
         min_levels: int = 2,
     ) -> list[Candidate]:
         """One preload-scale candidate per preload level of ``conditions``
@@ -236,8 +252,9 @@ class SpindleModelSpec(ModelSpec):
         return bool(set(self.effects) & set(THERMAL_DISPLACEMENT_EFFECTS))
 
     def configured(self, preload_n: float) -> Spindle:
-        """The :class:`~thermobear.Spindle` of this configuration at a
-        stated preload (scaled by :meth:`effective_preload_n`)."""
+        """The [`Spindle`][thermobear.Spindle] of this configuration at a
+        stated preload (scaled by
+        [`effective_preload_n`][thermobear.SpindleModelSpec.effective_preload_n])."""
         o = self.options
         spring = o["preload_kind"] == "spring"
         return self.spindle.with_options(
@@ -245,7 +262,7 @@ class SpindleModelSpec(ModelSpec):
             preload_kind=o["preload_kind"],
             spring_rate_n_per_um=float(o["spring_rate_n_per_um"]) if spring else None,
             effects=list(self.effects),
-            spin_friction=float(o["spin_friction"]),
+            spin_friction_coefficient=float(o["spin_friction_coefficient"]),
             heat_model=str(o["heat_model"]),
             lubrication=o["lubrication"],
             churning_oil_fraction=float(o["churning_oil_fraction"]),
@@ -296,15 +313,19 @@ class SpindleModelSpec(ModelSpec):
             raise res
         return res
 
-    def predict(self, conditions: "polars.DataFrame") -> dict[str, np.ndarray]:  # noqa: F821
-        """Every quantity of :data:`SPINDLE_QUANTITIES` at each row of
+    def predict(self, conditions: polars.DataFrame) -> dict[str, np.ndarray]:
+        """Every quantity of ``SPINDLE_QUANTITIES`` at each row of
         ``conditions`` (``speed_rpm`` and ``axial_n`` or ``preload_n``):
         name -> array. The vibration is computed only when asked for (the
         returned mapping evaluates it on first access)."""
         sp = conditions["speed_rpm"].to_numpy().astype(float)
-        radial = conditions["radial_n"].to_numpy() if "radial_n" in conditions.columns else []
-        if np.any(np.asarray(radial) != 0.0):
-            r = float(np.asarray(radial)[np.asarray(radial) != 0.0][0])
+        radial = (
+            conditions["radial_n"].to_numpy().astype(float)
+            if "radial_n" in conditions.columns
+            else np.zeros(0)
+        )
+        if np.any(radial != 0.0):
+            r = float(radial[radial != 0.0][0])
             raise ConfigError(
                 f"invalid radial_n = {r}: a spindle's radial load is a setting of the "
                 "Spindle (with_options(radial_load_n=...)), not a measured condition"
@@ -333,6 +354,9 @@ class SpindleModelSpec(ModelSpec):
 
     def __repr__(self) -> str:
         return f"SpindleModelSpec({self.spindle!r}, effects={list(self.effects)})"
+
+
+register_kind("spindle", Spindle, SpindleModelSpec, SPINDLE_QUANTITIES)
 
 
 def runout_velocity_rms_mm_s(velocity_rms_mm_s: Any, speed_rpm: Any, runout_um: float) -> Any:
@@ -365,7 +389,7 @@ class _Predictions(dict):
 
 
 class _RotorView:
-    """The spindle protocol of :mod:`thermobear.rotor` for one configuration,
+    """The spindle protocol of [`thermobear.rotor`][thermobear.rotor] for one configuration,
     reading the raceway offsets from the spec's cached steady states."""
 
     def __init__(self, spec: SpindleModelSpec, preload_n: float) -> None:
@@ -379,12 +403,15 @@ class _RotorView:
 
 def _default_spin_friction(spindle: Spindle) -> float:
     a = spindle.assumptions
-    if "spin_friction" in a:
-        return float(a["spin_friction"])
+    if "spin_friction_coefficient" in a:
+        return float(a["spin_friction_coefficient"])
     raise ConfigError(f"invalid spindle = {spindle!r}: no spin friction coefficient in assumptions")
 
 
 def _check_option_names(options: dict) -> None:
+    from .registry import current_option_names
+
+    current_option_names(options)
     for k in options:
         if k in _OPTIONS or k.split("@", 1)[0] == "preload_scale" and "@" in k:
             continue
@@ -392,9 +419,9 @@ def _check_option_names(options: dict) -> None:
 
 
 def _check_options(o: dict) -> None:
-    mu = o["spin_friction"]
+    mu = o["spin_friction_coefficient"]
     if not (isinstance(mu, (int, float)) and np.isfinite(mu) and mu >= 0.0):
-        raise ConfigError(f"invalid spin_friction = {mu!r}: a finite coefficient >= 0")
+        raise ConfigError(f"invalid spin_friction_coefficient = {mu!r}: a finite coefficient >= 0")
     if o["preload_kind"] not in ("rigid", "spring"):
         raise ConfigError(f"invalid preload_kind = {o['preload_kind']!r}: 'rigid' or 'spring'")
     k = o["spring_rate_n_per_um"]
@@ -412,8 +439,10 @@ def _check_options(o: dict) -> None:
 # candidates
 
 
-def _spindle_candidate_list(model: Optional[SpindleModelSpec], quantities: Sequence[str] = ()):
-    """The spindle's candidates (same :class:`thermobear.diagnosis.Candidate`
+def _spindle_candidate_list(
+    model: Optional[SpindleModelSpec], quantities: Sequence[str] = ()
+) -> list[Candidate]:
+    """The spindle's candidates (same ``thermobear.diagnosis.Candidate``
     records as the bearing registry)."""
 
     if model is None:
@@ -512,9 +541,9 @@ def _spin_friction_candidates(opts: dict, allq: tuple) -> list[Candidate]:
     return [
         _calibrated_input(
             "spin_friction_coefficient",
-            "spin_friction",
+            "spin_friction_coefficient",
             "1",
-            opts["spin_friction"],
+            opts["spin_friction_coefficient"],
             _SPIN_BOUNDS,
             desc,
             allq,
@@ -577,7 +606,7 @@ def _unbalance_candidates(opts: dict) -> list[Candidate]:
 
 def _on_grid(null: float, lo: float, hi: float) -> float:
     """The null value, snapped onto the screening grid of
-    :mod:`thermobear.diagnosis` (``linspace(lo, hi, _GRID)`` plus the null)
+    [`thermobear.diagnosis`][thermobear.diagnosis] (``linspace(lo, hi, _GRID)`` plus the null)
     when it lies within rounding of a grid point: 0.05 and
     ``linspace(0, 0.3, 13)[2]`` differ in the last bit, and two abscissae an
     ulp apart make the cubic interpolant of the predictions meaningless."""
@@ -590,17 +619,23 @@ def _on_grid(null: float, lo: float, hi: float) -> float:
 def spindle_candidates(
     model: Optional[SpindleModelSpec] = None, quantities: Sequence[str] = ()
 ) -> "polars.DataFrame":  # noqa: F821
-    """The spindle candidate registry (columns as
-    :func:`thermobear.candidates`); without ``model`` the baseline is
-    the seed ceramic spindle with every effect off."""
+    """Deprecated: [`thermobear.candidates`][thermobear.diagnosis.candidates.candidates] takes a
+    spindle spec or a [`Spindle`][thermobear.Spindle]. Without ``model`` the baseline is the
+    seed ceramic spindle with every effect off."""
+    from .._deprecation import warn_renamed
+
+    warn_renamed("spindle_candidates", "candidates", what="it takes a spindle model")
     if model is None:
         model = SpindleModelSpec(Spindle.preset("seed-ceramic-spindle"), effects=[])
     return _candidate_table(model, quantities)
 
 
 def load_spindle_measurements(data: Any) -> "polars.DataFrame":  # noqa: F821
-    """:func:`thermobear.load_measurements` with the spindle quantities of
-    :data:`SPINDLE_QUANTITIES` (``preload_n`` is stored as ``axial_n``)."""
+    """Deprecated: [`thermobear.load_measurements`][thermobear.load_measurements] recognises spindle
+    data by their quantities (or takes ``model=``)."""
+    from .._deprecation import warn_renamed
+
+    warn_renamed("load_spindle_measurements", "load_measurements", what="it reads spindle data")
     return load_measurements(data, SPINDLE_QUANTITIES)
 
 
@@ -611,20 +646,21 @@ def diagnose_spindle(
     holdout: Union[str, float, Sequence[str], None] = "highest_speeds",
     **options: Any,
 ) -> Diagnosis:
-    """:func:`thermobear.diagnose` for a :class:`SpindleModelSpec`: the same
-    audit, fingerprints, screening, acceptance rules, verdict and gap table
-    (keyword ``options`` as there), with the spindle's quantities and
-    candidates (:func:`spindle_candidates`)."""
-    if not isinstance(model, SpindleModelSpec):
+    """Deprecated: [`thermobear.diagnose`][thermobear.diagnose] takes a spindle spec or a
+    [`Spindle`][thermobear.Spindle]."""
+    from .._deprecation import warn_renamed
+
+    warn_renamed("diagnose_spindle", "diagnose", what="it takes a spindle model")
+    if not isinstance(model, (SpindleModelSpec, Spindle)):
         raise ConfigError(f"invalid model = {model!r}: give a thermobear.SpindleModelSpec")
     return diagnose(model, measured, candidates, holdout, **options)
 
 
-def seed_b_measurements() -> "polars.DataFrame":  # noqa: F821
+def seed_b_measurements() -> polars.DataFrame:
     """Seed B's reported measurements (configs/seed_b_measurements.csv; the
     sources are in the file) as a checked tidy table."""
     import polars as pl
 
     path = resources.files("thermobear.configs").joinpath("seed_b_measurements.csv")
     with resources.as_file(path) as p:
-        return load_spindle_measurements(pl.read_csv(p, comment_prefix="#"))
+        return load_measurements(pl.read_csv(p, comment_prefix="#"), SPINDLE_QUANTITIES)

@@ -51,7 +51,7 @@ def residual_shape(speed: np.ndarray, r: np.ndarray) -> tuple[str, dict[str, flo
             coef, *_ = np.linalg.lstsq(a, r, rcond=None)
             best = min(best, _chi2(r - a @ coef))
         aic["local feature"] = best + 6.0
-    return min(aic, key=aic.get), aic
+    return min(aic, key=aic.__getitem__), aic
 
 
 def _cosine(a: np.ndarray, b: np.ndarray) -> float:
@@ -80,7 +80,7 @@ def fisher_identifiability(jac: np.ndarray, spans: np.ndarray) -> tuple[float, s
     their bound ``spans``, in correlation form (unit diagonal). Returns its
     condition number and the indices it does not identify: a parameter no
     point moves (zero diagonal), or one with a large share (|v| > 0.3) of
-    an eigenvector whose eigenvalue is below 1/:data:`COND_MAX` of the
+    an eigenvector whose eigenvalue is below 1/``COND_MAX`` of the
     largest."""
     js = jac * spans[None, :]
     f = js.T @ js

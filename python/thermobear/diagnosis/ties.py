@@ -51,8 +51,8 @@ def significant_rivals(rows, fits, best, data, exclude) -> list[str]:
     """Rivals beyond the delta-BIC margin that the best candidate does not
     beat significantly: a named candidate (not at a bound, delta-BIC > 0)
     whose delta-BIC lead the rival, were it the truth, would give the best
-    by chance in more than 5 % of the data sets (:func:`lead_z` below
-    :data:`LEAD_Z`). This matters only for fits less than 3.3 sigma apart,
+    by chance in more than 5 % of the data sets (``lead_z`` below
+    ``LEAD_Z``). This matters only for fits less than 3.3 sigma apart,
     where the margin of 2 can be crossed by noise."""
     pb = fits[best["candidate"]]["pred"]
     out = []

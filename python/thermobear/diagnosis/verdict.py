@@ -1,4 +1,4 @@
-"""Step 5 of :func:`thermobear.diagnose`: the verdict in words."""
+"""Step 5 of [`thermobear.diagnose`][thermobear.diagnose]: the verdict in words."""
 
 from __future__ import annotations
 
@@ -47,9 +47,9 @@ def unresolved_text(records: list, gain: float, ctrl, chi2_named=None, k_named=N
 
 
 def verdict_text(accepted: list, tie: list, p_final: float, unresolved=None, outliers=None) -> str:
-    """The verdict: the accepted candidates in words (:func:`_verdict_part`)
+    """The verdict: the accepted candidates in words (``_verdict_part``)
     and a tie set, or the unresolved comparison with the generic control
-    (:func:`unresolved_text`); without any, "structured residual not
+    (``unresolved_text``); without any, "structured residual not
     explained by any known effect" when the final residual fails the chi^2
     test at 1 % (``p_final`` < 0.01), else "no missing effect supported".
     Outliers left out (``outliers``: their table) close the verdict."""

@@ -1,8 +1,8 @@
-"""Model-vs-measurement discrepancy workflow (issue 6): find where the model
+"""Model-vs-measurement discrepancy workflow: find where the model
 misses measured data, name the missing effect the data support, show the gap
 shrink -- and refuse to name one the data cannot support.
 
-Pipeline of :func:`diagnose` (each step a function of its own module in
+Pipeline of [`diagnose`][thermobear.diagnose] (each step a function of its own module in
 this package):
 
 1. residual audit per quantity and speed band (mean residual/sigma, chi^2)
@@ -23,13 +23,13 @@ this package):
 4. acceptance: delta-BIC >= 10 against the setting, the cross-validated
    chi^2 improved, the 95 % profile interval (chi^2 rise 3.84 phi, phi =
    max(1, reduced chi^2)) inside the bounds and excluding the null value,
-   no rival in a tie (:mod:`.ties`: within delta-BIC 2, or a lead noise
+   no rival in a tie (``thermobear.diagnosis.ties``: within delta-BIC 2, or a lead noise
    could produce; a rival at its bound is none). Accepted effects join the
    setting and the screening repeats while the residual fails the chi^2
-   test at 1 %. Then the generic controls (:mod:`.control`) are compared
+   test at 1 %. Then the generic controls (``thermobear.diagnosis.control``) are compared
    with what was accepted (per-quantity control: by BIC; carrier control:
    the named set must fit better by more than 3.84 in chi^2), and the
-   outlier audit (:mod:`.outliers`) runs on the best fit: flagged points
+   outlier audit (``thermobear.diagnosis.outliers``) runs on the best fit: flagged points
    are left out and the search runs again;
 5. a verdict that says what each accepted candidate is: a missing effect
    (a registry switch or a term the baseline leaves out), a miscalibrated
@@ -40,17 +40,17 @@ this package):
    residual not explained by any known effect" -- and the outliers left out;
 6. the held-out gap before/after per quantity and speed band.
 
-Model specs: :class:`BearingModelSpec` (one bearing, quantities
-:data:`QUANTITIES`) and :class:`thermobear.SpindleModelSpec` (the seed B
+Model specs: [`BearingModelSpec`][thermobear.BearingModelSpec] (one bearing, quantities
+``QUANTITIES``) and [`thermobear.SpindleModelSpec`][thermobear.SpindleModelSpec] (the seed B
 spindle with its rotor) follow one protocol -- ``quantities``,
 ``candidate_list(quantities)``, ``predict(conditions)``,
 ``with_setting(add_effects, **options)``, ``options``, ``effects`` -- and
-:func:`diagnose` runs the same statistics on either.
+[`diagnose`][thermobear.diagnose] runs the same statistics on either.
 
 Speed: every model configuration (effects + options + parameter value) is
 evaluated once on the measured conditions and cached in the
-:class:`BearingModelSpec`; a parameter candidate is evaluated on a fixed grid
-of values over its bounds and calibrated on a cubic interpolant of the
+[`BearingModelSpec`][thermobear.BearingModelSpec]; a parameter candidate is evaluated on a fixed
+grid of values over its bounds and calibrated on a cubic interpolant of the
 predictions, so re-diagnosing new noise on the same conditions costs no
 model run.
 """
@@ -58,7 +58,7 @@ model run.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Optional, Sequence, Union
+from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
 
 import numpy as np
 
@@ -77,13 +77,16 @@ from .control import (
 from .identifiability import identifiability
 from .measurements import MeasuredData, prepare_measurements
 from .outliers import flag_outliers, outlier_table
-from .protocol import ModelSpec, check_spec
+from .protocol import ModelSpec, as_spec
 from .result import Diagnosis
 from .screening import _curve, _fit, candidate_curves, screen, screening_table
 from .setting import _predict, _Setting
 from .statistics import _chi2, noise_p_value
 from .ties import significant_rivals, tie_gap, tie_table
 from .verdict import verdict_text
+
+if TYPE_CHECKING:
+    import polars as pl
 
 __all__ = ["diagnose"]
 
@@ -93,7 +96,7 @@ _OUTLIER_PASSES = 2
 
 @dataclass(frozen=True)
 class _Rules:
-    """The decision thresholds and switches of :func:`diagnose`."""
+    """The decision thresholds and switches of [`diagnose`][thermobear.diagnose]."""
 
     max_rounds: int
     delta_bic_min: float
@@ -145,10 +148,14 @@ def diagnose(
     outliers: bool = True,
     control: bool = True,
 ) -> Diagnosis:
-    """Diagnose the gap between ``model`` (a :class:`BearingModelSpec`,
-    the baseline) and ``measured`` (anything :func:`load_measurements`
-    reads). ``candidates``: names from :func:`candidates` (default: all of
-    them, with a sensor-offset decoy per measured quantity and, when the
+    """Diagnose the gap between ``model`` (the baseline: a
+    [`BearingModelSpec`][thermobear.BearingModelSpec] or
+    [`SpindleModelSpec`][thermobear.SpindleModelSpec], or
+    a [`Bearing`][thermobear.Bearing] or [`Spindle`][thermobear.Spindle] taken as
+    configured, every effect it has on) and ``measured`` (anything
+    [`load_measurements`][thermobear.load_measurements] reads, with that model's quantities).
+    ``candidates``: names from [`candidates`][thermobear.diagnosis.candidates.candidates] (default:
+    all of them, with a sensor-offset decoy per measured quantity and, when the
     data hold two or more load levels, a load-scale candidate per level:
     ``axial_load_scale@<N>`` / ``radial_load_scale@<N>`` on a bearing,
     ``preload_scale@<N>`` on a spindle); ``holdout``:
@@ -157,10 +164,10 @@ def diagnose(
     label(s), or None; ``envelope``: the operating range where an extra
     measurement can be made (``{"speed_rpm": (lo, hi), "axial_n": (lo,
     hi)}``; default: the measured range); ``outliers``: run the robust
-    outlier audit (:mod:`.outliers`); ``control``: compare the best named
-    candidate with the generic smooth control (:mod:`.control`). See the
-    module docstring for the statistics; returns a :class:`Diagnosis`."""
-    check_spec(model)
+    outlier audit (``thermobear.diagnosis.outliers``); ``control``: compare the best named
+    candidate with the generic smooth control (``thermobear.diagnosis.control``). See the
+    module docstring for the statistics; returns a [`Diagnosis`][thermobear.Diagnosis]."""
+    model = as_spec(model)
     rules = _Rules(
         max_rounds, delta_bic_min, tie_delta_bic, lookalike_cosine, suggest, envelope, control
     )
@@ -191,7 +198,13 @@ def diagnose(
     return _conclude(s, full, keep, z, pred0, baseline_audit)
 
 
-def _search(model, data: MeasuredData, pool, outside, rules: _Rules) -> _Search:
+def _search(
+    model: ModelSpec,
+    data: MeasuredData,
+    pool: Sequence[Candidate],
+    outside: Sequence[str],
+    rules: _Rules,
+) -> _Search:
     """The screening rounds on ``data``: while the residual is above noise,
     screen, accept the best passing candidate, stop at a tie or when the
     generic control explains the data as well."""
@@ -210,7 +223,7 @@ def _search(model, data: MeasuredData, pool, outside, rules: _Rules) -> _Search:
 def _control_check(s: _Search, pred0: np.ndarray, margin: float) -> None:
     """The generic control against what the rounds accepted: when a generic
     term fitted to the baseline's residual explains the data as well as
-    the accepted candidates together (:func:`matching_control`: the
+    the accepted candidates together (``matching_control``: the
     per-quantity control by BIC, no more than ``margin`` below; a carrier
     control by the chi^2 lead), the data cannot tell them from an unknown
     effect: they are withdrawn from ``accepted`` and reported as
@@ -228,7 +241,7 @@ def _control_check(s: _Search, pred0: np.ndarray, margin: float) -> None:
 
 def _also_unresolved(s: _Search, ctrl: GenericControl) -> list:
     """The first round's other named candidates that explain the data as
-    well as the control (:func:`explains_as_well`): listed as unresolved
+    well as the control (``explains_as_well``): listed as unresolved
     beside the accepted ones, so that the verdict names every known
     candidate the data cannot tell from the unknown source."""
     if not s.screening or s.screening[0].is_empty():
@@ -292,7 +305,7 @@ def _screening_round(s: _Search, rnd: int, rules: _Rules) -> bool:
 
 def _accept(s: _Search, c: Candidate, best: dict, fit: dict, rnd: int) -> None:
     """Add an accepted candidate to the setting; re-calibrate the accepted
-    parameters together (:func:`joint_refit`)."""
+    parameters together (``joint_refit``)."""
     d = s.data
     s.accepted.append(accepted_record(c, best, rnd))
     s.st = s.st.apply(c, best["value"], s.base_options)
@@ -308,7 +321,14 @@ def _accept(s: _Search, c: Candidate, best: dict, fit: dict, rnd: int) -> None:
         s.st, s.pred = joint
 
 
-def _conclude(s: _Search, full: MeasuredData, keep, z, pred0, baseline_audit) -> Diagnosis:
+def _conclude(
+    s: _Search,
+    full: MeasuredData,
+    keep: np.ndarray,
+    z: np.ndarray,
+    pred0: np.ndarray,
+    baseline_audit: pl.DataFrame,
+) -> Diagnosis:
     """The verdict, the held-out gap before/after and the measured points
     (outliers included, flagged) with both predictions."""
     import polars as pl

@@ -4,20 +4,26 @@ torque and speed, and the largest Lyapunov exponent."""
 
 from __future__ import annotations
 
-from typing import Any, Callable, Mapping, Optional, Sequence, Union
+from typing import TYPE_CHECKING, Any, Callable, Mapping, Optional, Sequence, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .. import _native
+from .._deprecation import renamed_kwargs
+from .._types import Direction, LyapunovMethod, LyapunovPer
 from .pair import _config_error
 from .system import GearSystem
 from .tables import as_speeds
 
+if TYPE_CHECKING:
+    import polars
+
 Progress = Optional[Callable[[int, int], Any]]
 
 #: Classifier and sweep settings reachable as keyword arguments of
-#: :func:`bifurcation`, :func:`bifurcation_set` and :func:`regime_map`
-#: (``None``: the default named in :func:`bifurcation`).
+#: ``bifurcation``, ``bifurcation_set`` and ``regime_map``
+#: (``None``: the default named in ``bifurcation``).
 SETTING_NAMES = (
     "max_transient_periods",
     "max_period",
@@ -65,7 +71,7 @@ _NULLABLE = {
 }
 
 
-def _speeds(speeds_rpm: Sequence[float]) -> np.ndarray:
+def _speeds(speeds_rpm: ArrayLike) -> np.ndarray:
     return as_speeds(speeds_rpm)
 
 
@@ -78,7 +84,7 @@ def _count(name: str, value: Any, minimum: int) -> int:
     return int(value)
 
 
-def _counts(transient: Any, record: Any, steps: Any, lyapunov: Any) -> tuple[int, ...]:
+def _counts(transient: Any, record: Any, steps: Any, lyapunov: Any) -> tuple[int, int, int, int]:
     return (
         _count("transient_periods", transient, 0),
         _count("record_periods", record, 2),
@@ -97,9 +103,51 @@ def _check_system(system: Any) -> None:
         raise _config_error(f"invalid system = {system!r}: must be a thermobear.GearSystem")
 
 
-def _points_frame(
-    cols: Mapping[str, Any], direction: str, case: Optional[str]
-) -> "polars.DataFrame":  # noqa: F821
+#: RK4 steps per mesh period of the sweeps when none is given; raised to
+#: the fewest the swept speeds need when that is more (``sweep_steps``).
+DEFAULT_STEPS_PER_PERIOD = 64
+
+
+def sweep_steps(systems: Sequence[GearSystem], speeds: Any, steps_per_period: Any) -> int:
+    """The RK4 steps per mesh period of a sweep, checked at every speed of
+    every system before any work. The rule (the native model's): at least
+    16 steps per mesh period, and a step no longer than 0.1 x the shortest
+    natural period at the speed's bearing stiffness -- so the need grows
+    as the speed falls (longer mesh periods). ``None``: the default
+    ``DEFAULT_STEPS_PER_PERIOD``, raised to the fewest every speed
+    needs. A number that is too small at some speeds raises ConfigError
+    naming them and the number needed, before any speed is run."""
+    import re
+
+    from ..errors import ConfigError
+
+    given = steps_per_period is not None
+    steps = _count("steps_per_period", steps_per_period, 1) if given else DEFAULT_STEPS_PER_PERIOD
+    need, short = steps, []
+    for sys in systems:
+        for v in np.asarray(speeds, dtype=float):
+            try:
+                sys.check_steps(float(v), steps if given else need)
+                continue
+            except ConfigError as e:
+                m = re.search(r"at least (\d+)", str(e))
+                if m is None:
+                    raise
+                n = int(m.group(1))
+            short.append(float(v))
+            need = max(need, n)
+            sys.check_steps(float(v), need)  # the stated need passes
+    if given and short:
+        raise _config_error(
+            f"invalid steps_per_period = {steps}: too coarse at {len(short)} of "
+            f"{len(speeds) * len(systems)} speeds ({min(short):g}-{max(short):g} rpm: the step "
+            f"must stay within 0.1 x the shortest natural period); use at least {need}, or "
+            "leave steps_per_period=None to have it chosen"
+        )
+    return need
+
+
+def _points_frame(cols: Mapping[str, Any], direction: str, case: Optional[str]) -> polars.DataFrame:
     import polars as pl
 
     counts = np.asarray(cols["poincare_count"])
@@ -107,7 +155,11 @@ def _points_frame(
     for c in PER_SPEED_COLUMNS:
         v = cols[c]
         per_speed[c] = list(v) if isinstance(v, list) else np.asarray(v)
-    types = {c: (pl.Float64 if t == "f" else pl.Utf8) for c, t in _NULLABLE.items()}
+    types: dict[str, type[pl.DataType]] = {
+        c: (pl.Float64 if t == "f" else pl.Utf8) for c, t in _NULLABLE.items()
+    }
+    # The list columns of a partial sweep may be empty: give them their types.
+    types.update(regime=pl.Utf8, impact=pl.Utf8, settled=pl.Boolean, jump_after=pl.Boolean)
     speed_df = pl.DataFrame(per_speed, schema_overrides=types)
     idx = np.repeat(np.arange(len(counts)), counts)
     df = speed_df[idx].with_columns(pl.Series("dte_um", np.asarray(cols["poincare_dte_um"])))
@@ -118,13 +170,62 @@ def _points_frame(
     return df.select(first + [c for c in df.columns if c not in first])
 
 
+def _sweep_partial(e: BaseException, jobs: Sequence[tuple[str, Optional[str]]]) -> None:
+    """Turn the finished speeds the native sweep attached to ``e`` into its
+    ``partial``, ``failed`` and ``not_run`` frames (see ``thermobear._partial``).
+    ``jobs``: ``(direction, case)`` per sweep, in the native order."""
+    import polars as pl
+
+    from .. import _partial
+
+    if not hasattr(e, "_sweep_partial"):
+        return
+    dicts = list(e._sweep_partial)
+    frames = [_points_frame(c, d, case) for (d, case), c in zip(jobs, dicts, strict=False)]
+    filled = [f for f in frames if f.height]
+    partial = pl.concat(filled) if filled else frames[0]
+    with_case = any(case is not None for _, case in jobs)
+
+    def rows(items: list[Any], extra: dict[str, Any]) -> pl.DataFrame:
+        cols: dict[str, Any] = {"speed_rpm": [float(r[1]) for r in items]}
+        schema: dict[str, Any] = {"speed_rpm": pl.Float64}
+        for name, (key, dtype) in extra.items():
+            cols[name] = [key(r) for r in items]
+            schema[name] = dtype
+        cols["direction"] = [jobs[r[0]][0] for r in items]
+        schema["direction"] = pl.Utf8
+        if with_case:
+            cols["case"] = [jobs[r[0]][1] for r in items]
+            schema["case"] = pl.Utf8
+        return pl.DataFrame(cols, schema=schema)
+
+    failed_rows = list(e._sweep_failed)  # type: ignore[attr-defined]
+    failed = rows(failed_rows, {"message": (lambda r: str(r[2]), pl.Utf8)})
+    not_run = rows(list(e._sweep_not_run), {})  # type: ignore[attr-defined]
+    labels = [
+        f"{r[1]:g} rpm" + (f" ({jobs[r[0]][1]}, {jobs[r[0]][0]})" if len(jobs) > 1 else "")
+        for r in failed_rows
+    ]
+    continuation = any(jobs[r[0]][0] in ("up", "down") for r in failed_rows)
+    _partial.finish(
+        e,
+        partial,
+        failed,
+        not_run,
+        finished=sum(len(c["speed_rpm"]) for c in dicts),
+        total=sum(len(c["speed_rpm"]) for c in dicts) + failed.height + not_run.height,
+        failed_labels=labels,
+        note=": a continuation sweep stops at its failed speed" if continuation else "",
+    )
+
+
 def bifurcation(
     system: GearSystem,
-    speeds_rpm: Sequence[float],
-    direction: str = "up",
+    speeds_rpm: ArrayLike,
+    direction: Direction = "down",
     transient_periods: int = 300,
     record_periods: int = 100,
-    steps_per_period: int = 64,
+    steps_per_period: Optional[int] = None,
     *,
     lyapunov_periods: int = 100,
     progress: Progress = None,
@@ -140,10 +241,11 @@ def bifurcation(
     jump_rel_amplitude: Optional[float] = None,
     jump_trend_factor: Optional[float] = None,
     jump_window_speeds: Optional[int] = None,
-) -> "polars.DataFrame":  # noqa: F821
-    """Speed sweep (A Figs. 14-15). ``"up"``/``"down"`` carry the state from
-    speed to speed (continuation), ``"independent"`` starts every speed from
-    the static state (parallel). ``speeds_rpm`` in any order (distinct): they
+) -> polars.DataFrame:
+    """Speed sweep (A Figs. 14-15). ``"down"`` (default: a run-down from the
+    top speed) and ``"up"`` carry the state from speed to speed
+    (continuation), ``"independent"`` starts every speed from the static
+    state (parallel). ``speeds_rpm`` in any order (distinct): they
     are sorted and swept ascending for ``"up"``/``"independent"``, descending
     for ``"down"``; the rows come in that sweep order.
 
@@ -182,27 +284,36 @@ def bifurcation(
     step relative to the local median step (5), taken over
     ``jump_window_speeds`` [speeds] neighbouring steps on each side (5).
     Bad values raise ConfigError
-    naming the setting. GIL released; Ctrl-C interrupts; ``progress(done,
-    total)``."""
+    naming the setting. ``steps_per_period`` (RK4 steps per mesh period;
+    None: 64, or more when a swept speed needs more) is checked at every
+    speed before the sweep starts (``sweep_steps``). GIL released;
+    Ctrl-C interrupts; ``progress(done, total)``."""
     _check_system(system)
-    cols = _native.bifurcation(
-        system._s,
-        _speeds(speeds_rpm),
-        direction,
-        *_counts(transient_periods, record_periods, steps_per_period, lyapunov_periods),
-        progress,
-        _settings(locals()),
-    )
+    speeds = _speeds(speeds_rpm)
+    steps = sweep_steps([system], speeds, steps_per_period)
+    settings = _settings(locals())
+    try:
+        cols = _native.bifurcation(
+            system._s,
+            speeds,
+            direction,
+            *_counts(transient_periods, record_periods, steps, lyapunov_periods),
+            progress,
+            settings,
+        )
+    except BaseException as e:
+        _sweep_partial(e, [(direction, None)])
+        raise
     return _points_frame(cols, direction, None)
 
 
 def bifurcation_set(
     systems: Mapping[str, GearSystem],
-    speeds_rpm: Sequence[float],
+    speeds_rpm: ArrayLike,
     directions: Sequence[str] = ("up", "down"),
     transient_periods: int = 300,
     record_periods: int = 100,
-    steps_per_period: int = 64,
+    steps_per_period: Optional[int] = None,
     *,
     lyapunov_periods: int = 100,
     progress: Progress = None,
@@ -218,10 +329,10 @@ def bifurcation_set(
     jump_rel_amplitude: Optional[float] = None,
     jump_trend_factor: Optional[float] = None,
     jump_window_speeds: Optional[int] = None,
-) -> "polars.DataFrame":  # noqa: F821
+) -> polars.DataFrame:
     """Every (case, direction) sweep over the same speeds in parallel
-    (lock-step batches); the :func:`bifurcation` columns (each sweep in its
-    sweep order) plus ``case``. Settings as in :func:`bifurcation`."""
+    (lock-step batches); the [`bifurcation`][thermobear.bifurcation] columns (each sweep in its
+    sweep order) plus ``case``. Settings as in [`bifurcation`][thermobear.bifurcation]."""
     import polars as pl
 
     if not systems:
@@ -229,14 +340,21 @@ def bifurcation_set(
     jobs = [(name, sys, d) for name, sys in systems.items() for d in directions]
     for _, sys, _ in jobs:
         _check_system(sys)
-    res = _native.bifurcation_many(
-        [j[1]._s for j in jobs],
-        [j[2] for j in jobs],
-        _speeds(speeds_rpm),
-        *_counts(transient_periods, record_periods, steps_per_period, lyapunov_periods),
-        progress,
-        _settings(locals()),
-    )
+    speeds = _speeds(speeds_rpm)
+    steps = sweep_steps(list(systems.values()), speeds, steps_per_period)
+    settings = _settings(locals())
+    try:
+        res = _native.bifurcation_many(
+            [j[1]._s for j in jobs],
+            [j[2] for j in jobs],
+            speeds,
+            *_counts(transient_periods, record_periods, steps, lyapunov_periods),
+            progress,
+            settings,
+        )
+    except BaseException as e:
+        _sweep_partial(e, [(d, name) for name, _, d in jobs])
+        raise
     return pl.concat(
         [_points_frame(c, d, name) for (name, _, d), c in zip(jobs, res, strict=False)]
     )
@@ -288,7 +406,7 @@ def _per_speed(pts: Any, keys: list[str], rel_tol: float, max_period: int) -> An
     return pl.concat(parts)
 
 
-def _range_row(c: dict[str, list], start: int, i: int, end: bool) -> dict[str, Any]:
+def _range_row(c: dict[str, list[Any]], start: int, i: int, end: bool) -> dict[str, Any]:
     """One range (rows start..i of one sweep); ``end``: another range follows."""
 
     def get(k: str, j: int, default: Any = None) -> Any:
@@ -335,8 +453,8 @@ def _ranges(g: Any, base: dict[str, Any]) -> list[dict[str, Any]]:
     return out
 
 
-def regimes(pts: Any, *, max_period: int = 32, period_rel_tol: float = 1e-3) -> "polars.DataFrame":  # noqa: F821
-    """Collapse a :func:`bifurcation` frame into speed ranges of one regime
+def regimes(pts: Any, *, max_period: int = 32, period_rel_tol: float = 1e-3) -> polars.DataFrame:
+    """Collapse a [`bifurcation`][thermobear.bifurcation] frame into speed ranges of one regime
     and impact, in sweep order (``"down"``: descending speed, so
     ``speed_from_rpm`` > ``speed_to_rpm``), per ``case``/``direction`` when
     present: ``speed_from_rpm``, ``speed_to_rpm``, ``regime``, ``period``,
@@ -378,14 +496,15 @@ def regimes(pts: Any, *, max_period: int = 32, period_rel_tol: float = 1e-3) -> 
     return pl.DataFrame(out, schema_overrides=schema)
 
 
+@renamed_kwargs(torques_nm="torques_n_m")
 def regime_map(
     system: GearSystem,
-    torques_nm: Sequence[float],
-    speeds_rpm: Sequence[float],
-    te_scales: Sequence[float] = (1.0,),
+    torques_n_m: ArrayLike,
+    speeds_rpm: ArrayLike,
+    te_scales: ArrayLike = (1.0,),
     transient_periods: int = 300,
     record_periods: int = 100,
-    steps_per_period: int = 64,
+    steps_per_period: Optional[int] = None,
     *,
     lyapunov_periods: int = 100,
     progress: Progress = None,
@@ -401,32 +520,83 @@ def regime_map(
     jump_rel_amplitude: Optional[float] = None,
     jump_trend_factor: Optional[float] = None,
     jump_window_speeds: Optional[int] = None,
-) -> "polars.DataFrame":  # noqa: F821
+) -> polars.DataFrame:
     """Motion regime over input torque x speed (x TE scale), every cell from
     its static state; speeds in any order (sorted ascending). Columns:
-    ``torque_nm`` (negative: coast), ``te_scale``, ``te_amplitude_um``,
+    ``torque_n_m`` (negative: coast), ``te_scale``, ``te_amplitude_um``,
     ``speed_rpm``, ``regime``, ``period``, ``impact``, ``amplitude_um``,
     ``mean_dte_um``, ``lyapunov_per_mesh_period``, ``lyapunov_per_s`` and
     their ``lyapunov_stderr_*``, ``zero_one_k``, ``transient_periods``,
     ``settled``. The bearing stiffness schedule stays the system's. Settings
-    as in :func:`bifurcation` (the jump settings are not used here)."""
-    import polars as pl
+    as in [`bifurcation`][thermobear.bifurcation] (the jump settings are not used here)."""
 
     _check_system(system)
-    torques = [float(t) for t in np.asarray(torques_nm, dtype=float).ravel()]
+    torques = [float(t) for t in np.asarray(torques_n_m, dtype=float).ravel()]
     scales = [float(e) for e in np.asarray(te_scales, dtype=float).ravel()]
-    cols = _native.regime_map(
-        system._s,
-        torques,
-        scales,
-        _speeds(speeds_rpm),
-        *_counts(transient_periods, record_periods, steps_per_period, lyapunov_periods),
-        progress,
-        _settings(locals()),
+    speeds = _speeds(speeds_rpm)
+    steps = sweep_steps([system], speeds, steps_per_period)
+    settings = _settings(locals())
+    try:
+        cols = _native.regime_map(
+            system._s,
+            torques,
+            scales,
+            speeds,
+            *_counts(transient_periods, record_periods, steps, lyapunov_periods),
+            progress,
+            settings,
+        )
+    except BaseException as e:
+        _map_partial(e, system)
+        raise
+    return _map_frame(cols, system)
+
+
+def _map_partial(e: BaseException, system: GearSystem) -> None:
+    """``partial``/``failed``/``not_run`` frames of a regime map that failed
+    or was stopped part-way (every other cell still ran)."""
+    import polars as pl
+
+    from .. import _partial
+
+    if not hasattr(e, "_map_partial"):
+        return
+    partial = _map_frame(dict(e._map_partial), system)
+    keys = {"torque_n_m": pl.Float64, "te_scale": pl.Float64, "speed_rpm": pl.Float64}
+    f_rows = list(e._map_failed)  # type: ignore[attr-defined]
+    n_rows = list(e._map_not_run)  # type: ignore[attr-defined]
+    failed = pl.DataFrame(
+        [tuple(float(v) for v in r[:3]) + (str(r[3]),) for r in f_rows],
+        schema={**keys, "message": pl.Utf8},
+        orient="row",
     )
-    types = {c: (pl.Float64 if t == "f" else pl.Utf8) for c, t in _NULLABLE.items() if c in cols}
+    not_run = pl.DataFrame([tuple(float(v) for v in r) for r in n_rows], schema=keys, orient="row")
+    _partial.finish(
+        e,
+        partial,
+        failed,
+        not_run,
+        finished=partial.height,
+        total=partial.height + failed.height + not_run.height,
+        unit="cells",
+        failed_labels=[f"{r[2]:g} rpm at {r[0]:g} N m x{r[1]:g}" for r in f_rows],
+    )
+
+
+def _map_frame(cols: Mapping[str, Any], system: GearSystem) -> polars.DataFrame:
+    import polars as pl
+
+    types: dict[str, Any] = {
+        c: (pl.Float64 if t == "f" else pl.Utf8) for c, t in _NULLABLE.items() if c in cols
+    }
+    types.update(regime=pl.Utf8, impact=pl.Utf8, settled=pl.Boolean)
     df = pl.DataFrame(
-        {k: (np.asarray(v) if not isinstance(v, list) else v) for k, v in cols.items()},
+        {
+            ("torque_n_m" if k == "torque_nm" else k): (
+                np.asarray(v) if not isinstance(v, list) else v
+            )
+            for k, v in cols.items()
+        },
         schema_overrides=types,
     )
     te = system.params["te_amplitude_um"]
@@ -440,12 +610,12 @@ def largest_lyapunov(
     time: Optional[float] = None,
     step: Optional[float] = None,
     transient_time: Optional[float] = None,
-    method: str = "benettin",
+    method: LyapunovMethod = "benettin",
     periods: int = 200,
     transient_periods: int = 300,
     steps_per_period: int = 64,
     block_periods: int = 10,
-    per: str = "s",
+    per: LyapunovPer = "s",
     return_stderr: bool = False,
 ) -> Union[float, tuple[float, float]]:
     """Largest Lyapunov exponent.
@@ -455,7 +625,7 @@ def largest_lyapunov(
     x^3 = 7.5 cos t; about 0.10), ``method="benettin"`` or
     ``"variational"``.
 
-    For a :class:`GearSystem` give ``speed_rpm``: Benettin renormalisation
+    For a [`GearSystem`][thermobear.GearSystem] give ``speed_rpm``: Benettin renormalisation
     once per mesh period over ``periods`` mesh periods after
     ``transient_periods`` from the static state, in blocks of
     ``block_periods`` (``periods`` rounded down to whole blocks, at least

@@ -3,11 +3,17 @@ the default parameters."""
 
 from __future__ import annotations
 
-from typing import Any, Sequence
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .. import _native
+from .._deprecation import renamed_kwargs
+from .._types import MeshModel
+
+if TYPE_CHECKING:
+    import polars
 
 #: Speeds at which the "speed" and "thermal" bearing stiffness is solved
 #: (linear interpolation in between, constant beyond the ends) [rpm].
@@ -22,7 +28,7 @@ def _config_error(msg: str) -> Exception:
 
 class GearPair:
     """A helical gear pair. ``GearPair.preset("seed-electric-drive")`` is seed
-    A's first pair (Table 3, typos corrected); :meth:`from_table` takes a
+    A's first pair (Table 3, typos corrected); ``from_table`` takes a
     paper-style table (E in MPa, density in t/mm^3, inertia in t mm^2) and
     refuses typos, naming the likely intended value."""
 
@@ -38,6 +44,7 @@ class GearPair:
         return list(_native.GearPair.preset_names())
 
     @classmethod
+    @renamed_kwargs(input_torque_nm="input_torque_n_m")
     def from_table(
         cls,
         *,
@@ -50,10 +57,10 @@ class GearPair:
         youngs_modulus_mpa: float,
         poisson_ratio: float,
         density_t_per_mm3: float,
-        mass_kg: Sequence[float],
-        polar_inertia_t_mm2: Sequence[float],
-        input_torque_nm: float,
-        profile_shift_coeff: Sequence[float] = (0.0, 0.0),
+        mass_kg: ArrayLike,
+        polar_inertia_t_mm2: ArrayLike,
+        input_torque_n_m: float,
+        profile_shift_coeff: ArrayLike = (0.0, 0.0),
         addendum_coeff: float = 1.0,
         dedendum_coeff: float = 1.25,
     ) -> "GearPair":
@@ -68,10 +75,10 @@ class GearPair:
                 float(youngs_modulus_mpa),
                 float(poisson_ratio),
                 float(density_t_per_mm3),
-                (float(mass_kg[0]), float(mass_kg[1])),
-                (float(polar_inertia_t_mm2[0]), float(polar_inertia_t_mm2[1])),
-                float(input_torque_nm),
-                (float(profile_shift_coeff[0]), float(profile_shift_coeff[1])),
+                (float(np.ravel(mass_kg)[0]), float(np.ravel(mass_kg)[1])),
+                (float(np.ravel(polar_inertia_t_mm2)[0]), float(np.ravel(polar_inertia_t_mm2)[1])),
+                float(input_torque_n_m),
+                (float(np.ravel(profile_shift_coeff)[0]), float(np.ravel(profile_shift_coeff)[1])),
                 float(addendum_coeff),
                 float(dedendum_coeff),
             )
@@ -79,8 +86,12 @@ class GearPair:
 
     @property
     def geometry(self) -> dict[str, float]:
-        """Derived geometry (mm, deg) and the contact ratios."""
-        return dict(self._g.geometry())
+        """Derived geometry (mm, deg), the contact ratios and the input
+        torque ``input_torque_n_m`` [N m]."""
+        g = dict(self._g.geometry())
+        if "input_torque_nm" in g:
+            g["input_torque_n_m"] = g.pop("input_torque_nm")
+        return g
 
     @property
     def transverse_contact_ratio(self) -> float:
@@ -97,8 +108,8 @@ class GearPair:
         return dict(self._g.iso_stiffness())
 
     def mesh_stiffness(
-        self, points: int = 64, model: str = "potential-energy"
-    ) -> "polars.DataFrame":  # noqa: F821
+        self, points: int = 64, model: MeshModel = "potential-energy"
+    ) -> polars.DataFrame:
         """k_m over one mesh period: ``mesh_phase``,
         ``transverse_stiffness_n_per_m`` (along the transverse line of action,
         comparable with ISO's c_gamma b) and ``normal_stiffness_n_per_m`` (for
@@ -109,7 +120,7 @@ class GearPair:
         return pl.DataFrame({k: np.asarray(v) for k, v in cols.items()})
 
     @property
-    def typo_warnings(self) -> "polars.DataFrame":  # noqa: F821
+    def typo_warnings(self) -> polars.DataFrame:
         """The source table's suspicious values with the likely intended ones
         (for the preset: seed A Table 3 as printed)."""
         import polars as pl
@@ -137,7 +148,7 @@ class GearPair:
         return repr(self._g)
 
 
-def gear_defaults() -> "polars.DataFrame":  # noqa: F821
+def gear_defaults() -> polars.DataFrame:
     """The values seed A does not give, with the defaults used and why."""
     import polars as pl
 

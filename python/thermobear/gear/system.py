@@ -4,11 +4,14 @@ matrices, the bearing stiffness schedule against speed."""
 from __future__ import annotations
 
 import math
-from typing import Any, Optional, Sequence, Union
+from typing import TYPE_CHECKING, Any, Mapping, Optional, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .. import _native
+from .._deprecation import renamed_kwargs
+from .._types import BearingStiffnessPer, MeshDamping, StiffnessMode
 from .pair import STIFFNESS_SPEEDS_RPM, GearPair, _config_error
 from .tables import (
     MeshInput,
@@ -18,24 +21,28 @@ from .tables import (
     support_from_frame,
 )
 
+if TYPE_CHECKING:
+    import polars
+
 
 class GearSystem:
     """The 8-DOF helical pair on its bearings.
 
     Bearing support (A-52, ``diag(Kr, Kr, Ka)`` for pinion and gear):
-    ``stiffness`` is ``"constant"`` (zero-speed stiffness of ``bearings``
-    under the seed loads), ``"speed"`` (quasi-static stiffness at each
-    speed, no thermal effects), ``"thermal"`` (``stiffness_curve(mode=
+    ``stiffness`` is ``"speed"`` (default: quasi-static stiffness at each
+    speed, no thermal effects), ``"constant"`` (zero-speed stiffness of
+    ``bearings`` under the seed loads), ``"thermal"`` (``stiffness_curve(mode=
     "thermal")``) or a frame with ``speed_rpm`` and the radial/axial
     stiffness [N/m]. The three computed cases give ONE bearing's stiffness;
     each shaft carries ``bearings_per_shaft`` (default 2, seed A Fig. 1)
     identical bearings in parallel, so the support is n x one bearing's. A
     frame must say what it holds: ``bearing_stiffness_per="bearing"``
-    (``radial_stiffness_n_per_m``, ``axial_stiffness_n_per_m`` of one
+    (``radial_stiffness_seed_n_per_m``, ``axial_stiffness_seed_n_per_m`` of one
     bearing, multiplied by ``bearings_per_shaft``) or ``"shaft"`` (the
     whole support of one shaft, used as given; ``bearings_per_shaft`` must
     then be left out). A frame with ``support_radial_stiffness_n_per_m``,
-    ``support_axial_stiffness_n_per_m`` (as :attr:`stiffness_schedule`
+    ``support_axial_stiffness_n_per_m`` (as
+    [`stiffness_schedule`][thermobear.GearSystem.stiffness_schedule]
     returns) is per shaft. Bearing loads follow |torque|: Fa = 2380.9
     |T|/100 + 300 N preload, Fr = 1189.9 |T|/100 N (seed A section 2.3).
 
@@ -44,7 +51,7 @@ class GearSystem:
     ``backlash_um`` is a deprecated alias of ``backlash_total_um``
     (DeprecationWarning).
 
-    Mesh inputs (see :mod:`thermobear.gear.tables` for the table format):
+    Mesh inputs (see ``thermobear.gear.tables`` for the table format):
     ``mesh_stiffness_n_per_m`` (table with ``normal_stiffness_n_per_m`` or
     ``transverse_stiffness_n_per_m``, or a callable of ``mesh_phase``
     returning N/m along the normal deflection) replaces the computed
@@ -54,30 +61,32 @@ class GearSystem:
     first-harmonic TE of ``te_amplitude_um`` (default 2 um). Either is
     sampled once; the model interpolates the samples.
 
-    ``torque_nm``: input torque on the pinion (default the pair's); negative
+    ``torque_n_m``: input torque on the pinion [N m] (default the pair's;
+    the older ``torque_nm`` is deprecated); negative
     is coast (the back flanks carry the load). ``mesh_damping``:
     ``"in-contact"`` (A-46 as printed, default) or ``"always"``.
     """
 
+    @renamed_kwargs(torque_nm="torque_n_m")
     def __init__(
         self,
         gear: GearPair,
         bearings: Any = None,
-        stiffness: Union[str, Any] = "constant",
+        stiffness: Union[StiffnessMode, polars.DataFrame, Mapping[str, ArrayLike]] = "speed",
         *,
-        bearing_stiffness_per: Optional[str] = None,
+        bearing_stiffness_per: Optional[BearingStiffnessPer] = None,
         bearings_per_shaft: Optional[int] = None,
         half_backlash_um: Optional[float] = None,
         backlash_total_um: Optional[float] = None,
         backlash_um: Optional[float] = None,
         mesh_damping_ratio: float = 0.07,
-        mesh_damping: str = "in-contact",
+        mesh_damping: MeshDamping = "in-contact",
         bearing_damping_ratio: float = 0.02,
         te_amplitude_um: Optional[float] = None,
-        torque_nm: Optional[float] = None,
+        torque_n_m: Optional[float] = None,
         mesh_model: Optional[str] = None,
         table_points: int = 64,
-        stiffness_speeds_rpm: Optional[Sequence[float]] = None,
+        stiffness_speeds_rpm: Optional[ArrayLike] = None,
         mesh_stiffness_n_per_m: Optional[MeshInput] = None,
         transmission_error_um: Optional[MeshInput] = None,
     ) -> None:
@@ -87,7 +96,7 @@ class GearSystem:
             raise _config_error(f"invalid gear = {gear!r}: must be a thermobear.GearPair")
         half_um = backlash_half_um(half_backlash_um, backlash_total_um, backlash_um, 50.0)
         bearing = Bearing.preset("6208") if bearings is None else bearings
-        torque = float(gear.geometry["input_torque_nm"] if torque_nm is None else torque_nm)
+        torque = float(gear.geometry["input_torque_n_m"] if torque_n_m is None else torque_n_m)
         fa, fr = _native.seed_gear_bearing_loads(torque)
         s, kr, ka = self._support(
             bearing, stiffness, bearing_stiffness_per, bearings_per_shaft, stiffness_speeds_rpm,
@@ -143,7 +152,7 @@ class GearSystem:
         stiffness: Any,
         per: Optional[str],
         bearings_per_shaft: Optional[int],
-        speeds: Optional[Sequence[float]],
+        speeds: Optional[ArrayLike],
         loads: tuple[float, float],
     ) -> tuple[Any, Any, Any]:
         """Support stiffness schedule of one shaft (speed, kr, ka)."""
@@ -176,7 +185,7 @@ class GearSystem:
             raise _config_error(
                 "invalid stiffness = 'thermal': stiffness_curve(mode='thermal') is not "
                 f"available here ({e}); pass a frame with speed_rpm, "
-                "radial_stiffness_n_per_m, axial_stiffness_n_per_m instead"
+                "radial_stiffness_seed_n_per_m, axial_stiffness_seed_n_per_m instead"
             ) from e
         return support_from_frame(df, "bearing", n)
 
@@ -186,10 +195,13 @@ class GearSystem:
         direction; mesh damping N s/m; masses, radii, angles; torque in N m,
         negative for coast; ``te_amplitude_um``: the first-harmonic
         amplitude, or half the peak-to-peak of a TE table)."""
-        return dict(self._s.params())
+        p = dict(self._s.params())
+        if "torque_nm" in p:
+            p["torque_n_m"] = p.pop("torque_nm")
+        return p
 
     @property
-    def stiffness_schedule(self) -> "polars.DataFrame":  # noqa: F821
+    def stiffness_schedule(self) -> polars.DataFrame:
         """Support stiffness of one shaft (all its bearings) against speed."""
         import polars as pl
 
@@ -242,7 +254,7 @@ class GearSystem:
         """Mesh-normal projection vector a of q (A-45)."""
         return np.asarray(self._s.projection())
 
-    def mesh_tables(self) -> "polars.DataFrame":  # noqa: F821
+    def mesh_tables(self) -> polars.DataFrame:
         """The mesh stiffness along the normal deflection and the static TE
         the model uses over one mesh period: ``mesh_phase`` (i / n),
         ``normal_stiffness_n_per_m``, ``transmission_error_um``,
@@ -268,7 +280,7 @@ class GearSystem:
     def __repr__(self) -> str:
         p = self.params
         return (
-            f"GearSystem(stiffness={self.stiffness_case!r}, torque={p['torque_nm']:.1f} N m, "
+            f"GearSystem(stiffness={self.stiffness_case!r}, torque={p['torque_n_m']:.1f} N m, "
             f"k_m={p['mesh_stiffness_mean_n_per_m'] / 1e6:.0f} N/um, "
             f"2b={2 * p['half_backlash_um']:.0f} um, TE={p['te_amplitude_um']:.1f} um)"
         )

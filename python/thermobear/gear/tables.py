@@ -13,13 +13,14 @@ and the value column named with its unit (``normal_stiffness_n_per_m`` or
 ``transverse_stiffness_n_per_m``, converted with k_n = k_t / cos^2(beta), for
 the mesh stiffness; ``transmission_error_m`` or ``transmission_error_um``
 for the TE). When both of a pair are present they must agree (to 1e-9) and
-the first named is used, so the frames of :meth:`GearSystem.mesh_tables`
-and :meth:`GearPair.mesh_stiffness` can be given back directly. The
+the first named is used, so the frames of
+[`GearSystem.mesh_tables`][thermobear.GearSystem.mesh_tables]
+and [`GearPair.mesh_stiffness`][thermobear.GearPair.mesh_stiffness] can be given back directly. The
 abscissa must be strictly ascending and span at most one mesh period; a last
 point exactly one period after the first closes the period and must repeat
 the first value. Tables on the uniform phases ``i / n`` starting at phase 0
-(as :meth:`GearSystem.mesh_tables` returns them) are used as they are;
-others are resampled once onto ``table_points`` uniform phases by periodic
+(as [`GearSystem.mesh_tables`][thermobear.GearSystem.mesh_tables] returns them) are used as they
+are; others are resampled once onto ``table_points`` uniform phases by periodic
 linear interpolation. A callable gets the numpy array of the
 ``table_points`` phases ``i / table_points`` (``mesh_phase``) and returns
 the values in the unit of the keyword (N/m along the normal deflection, um);
@@ -31,9 +32,10 @@ from __future__ import annotations
 
 import math
 import warnings
-from typing import Any, Callable, Optional, Sequence, Union
+from typing import Any, Callable, Optional, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .pair import _config_error
 
@@ -212,10 +214,13 @@ def support_from_frame(
     df: Any, per: Optional[str], bearings_per_shaft: Optional[int]
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Support stiffness of one shaft (speed, kr, ka) from a frame. Per
-    bearing: columns ``radial_stiffness_n_per_m``/``axial_stiffness_n_per_m``
-    times ``bearings_per_shaft`` (default 2); per shaft: the same columns or
+    bearing: columns ``radial_stiffness_seed_n_per_m``/``axial_stiffness_seed_n_per_m``
+    (as [`thermobear.stiffness_curve`][thermobear.stiffness_curve] returns them; the older
+    ``radial_stiffness_n_per_m``/``axial_stiffness_n_per_m`` warn) times
+    ``bearings_per_shaft`` (default 2); per shaft: the same columns or
     ``support_radial_stiffness_n_per_m``/``support_axial_stiffness_n_per_m``
-    (as :attr:`GearSystem.stiffness_schedule` returns them), used as given."""
+    (as [`GearSystem.stiffness_schedule`][thermobear.GearSystem.stiffness_schedule] returns them),
+    used as given."""
     cols = _columns(df)
     support = all(
         c in cols for c in ("support_radial_stiffness_n_per_m", "support_axial_stiffness_n_per_m")
@@ -229,8 +234,10 @@ def support_from_frame(
             )
         per = "shaft"
     n = _bearing_count(per, bearings_per_shaft)
-    prefix = "support_" if support and per == "shaft" else ""
-    need = ["speed_rpm", f"{prefix}radial_stiffness_n_per_m", f"{prefix}axial_stiffness_n_per_m"]
+    if support and per == "shaft":
+        need = ["speed_rpm", "support_radial_stiffness_n_per_m", "support_axial_stiffness_n_per_m"]
+    else:
+        need = ["speed_rpm", *_bearing_stiffness_columns(cols)]
     for col in need:
         if col not in cols:
             raise _config_error(
@@ -241,6 +248,20 @@ def support_from_frame(
     kr = np.asarray(df[need[1]], dtype=float)[order] * n
     ka = np.asarray(df[need[2]], dtype=float)[order] * n
     return s[order], kr, ka
+
+
+def _bearing_stiffness_columns(cols: Any) -> list[str]:
+    """The radial and axial stiffness columns of one bearing in a frame:
+    the seed formula's (older names warn)."""
+    new = ["radial_stiffness_seed_n_per_m", "axial_stiffness_seed_n_per_m"]
+    old = ["radial_stiffness_n_per_m", "axial_stiffness_n_per_m"]
+    if all(c in cols for c in new) or not all(c in cols for c in old):
+        return new
+    from .._deprecation import warn_renamed
+
+    for o, n in zip(old, new, strict=True):
+        warn_renamed(o, n, stacklevel=6, what="stiffness frame column")
+    return old
 
 
 def _bearing_count(per: str, bearings_per_shaft: Optional[int]) -> int:
@@ -269,7 +290,7 @@ def bearing_count(bearings_per_shaft: Optional[int]) -> int:
     return int(bearings_per_shaft)
 
 
-def as_speeds(speeds_rpm: Sequence[float]) -> np.ndarray:
+def as_speeds(speeds_rpm: ArrayLike) -> np.ndarray:
     """Speeds [rpm] sorted ascending (any given order), distinct and positive."""
     s = np.asarray(speeds_rpm, dtype=float).ravel()
     if s.size == 0:

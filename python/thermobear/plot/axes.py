@@ -3,10 +3,13 @@ backend when there is no display)."""
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 
-def get_axes(ax: Any, polar: bool = False) -> Any:
+def get_axes(ax: Axes | None, polar: bool = False) -> Axes:
     if ax is not None:
         return ax
     import matplotlib

@@ -2,21 +2,39 @@
 
 from __future__ import annotations
 
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 import numpy as np
 
 from .axes import get_axes
 
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
-def stiffness_curve(df: Any, ax: Any = None, *, label: Optional[str] = None) -> Any:
-    """Axial and radial stiffness (N/um) against speed from
-    :func:`thermobear.stiffness_curve`."""
+
+def stiffness_curve(
+    df: Any, ax: Axes | None = None, *, label: Optional[str] = None, seed: bool = True
+) -> Axes:
+    """Radial and axial stiffness (N/um) against speed from
+    [`thermobear.stiffness_curve`][thermobear.stiffness_curve]: the entries ``k_xx`` and ``k_zz`` of
+    the full tangent stiffness (solid), and with ``seed=True`` beside them
+    seed A's simplified series formula (dashed, same colour)."""
     ax = get_axes(ax)
     s = df["speed_rpm"].to_numpy()
     tag = f" ({label})" if label else ""
-    ax.plot(s, df["axial_stiffness_n_per_m"].to_numpy() / 1e6, "-", label="axial" + tag)
-    ax.plot(s, df["radial_stiffness_n_per_m"].to_numpy() / 1e6, "--", label="radial" + tag)
+    for full, simple, name in (
+        ("k_xx_n_per_m", "radial_stiffness_seed_n_per_m", "radial k_xx"),
+        ("k_zz_n_per_m", "axial_stiffness_seed_n_per_m", "axial k_zz"),
+    ):
+        (line,) = ax.plot(s, df[full].to_numpy() / 1e6, "-", label=name + tag)
+        if seed and simple in df.columns:
+            ax.plot(
+                s,
+                df[simple].to_numpy() / 1e6,
+                "--",
+                color=line.get_color(),
+                label=name.split()[0] + " (seed formula)" + tag,
+            )
     ax.set_xlabel("speed [rpm]")
     ax.set_ylabel("stiffness [N/µm]")
     ax.grid(True, alpha=0.3)
@@ -27,12 +45,13 @@ def stiffness_curve(df: Any, ax: Any = None, *, label: Optional[str] = None) -> 
 def stiffness_cases(
     frames: Sequence[Any],
     labels: Sequence[str],
-    ax: Any = None,
+    ax: Axes | None = None,
     *,
-    column: str = "radial_stiffness_n_per_m",
-) -> Any:
+    column: str = "k_xx_n_per_m",
+) -> Axes:
     """One stiffness column against speed for several cases (e.g. constant,
-    speed, thermal)."""
+    speed, thermal); default the radial entry ``k_xx`` of the full
+    stiffness (``"radial_stiffness_seed_n_per_m"`` for seed A's formula)."""
     ax = get_axes(ax)
     for df, lab in zip(frames, labels, strict=False):
         ax.plot(df["speed_rpm"].to_numpy(), df[column].to_numpy() / 1e6, label=lab)
@@ -43,7 +62,7 @@ def stiffness_cases(
     return ax
 
 
-def contact_angles(df: Any, ax: Any = None) -> Any:
+def contact_angles(df: Any, ax: Axes | None = None) -> Axes:
     """Extreme inner and outer contact angles (deg) against speed."""
     ax = get_axes(ax)
     s = df["speed_rpm"].to_numpy()
@@ -60,7 +79,7 @@ def contact_angles(df: Any, ax: Any = None) -> Any:
     return ax
 
 
-def ball_loads(solution: Any, ax: Any = None) -> Any:
+def ball_loads(solution: Any, ax: Axes | None = None) -> Axes:
     """Inner and outer contact loads of every ball around the bearing
     (polar; azimuth 0 = direction of the radial load)."""
     ax = get_axes(ax, polar=True)

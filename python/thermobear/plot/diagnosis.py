@@ -1,19 +1,22 @@
-"""Figures of a :class:`~thermobear.Diagnosis`: measured against
+"""Figures of a [`Diagnosis`][thermobear.Diagnosis]: measured against
 the model before and after the accepted effects, and the residual in sigma
 against speed. Every function takes ``ax=None`` and returns the Axes."""
 
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
 
 from .axes import get_axes
 
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
 __all__ = ["diagnosis_fit", "diagnosis_residuals"]
 
 
-def diagnosis_fit(diagnosis: Any, quantity: Optional[str] = None, ax: Any = None) -> Any:
+def diagnosis_fit(diagnosis: Any, quantity: Optional[str] = None, ax: Axes | None = None) -> Axes:
     """Measured values (error bars: sigma; open markers: held out) and the
     model before/after against speed for one ``quantity`` (default: the
     first measured one)."""
@@ -54,7 +57,7 @@ def diagnosis_fit(diagnosis: Any, quantity: Optional[str] = None, ax: Any = None
     return ax
 
 
-def diagnosis_residuals(diagnosis: Any, ax: Any = None) -> Any:
+def diagnosis_residuals(diagnosis: Any, ax: Axes | None = None) -> Axes:
     """Residual / sigma against speed for every measured quantity, before
     (crosses) and after (dots) the accepted effects; the band +-2 shaded."""
     ax = get_axes(ax)

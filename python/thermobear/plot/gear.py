@@ -2,26 +2,29 @@
 
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
 
 from .axes import get_axes
 
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
 
 def bifurcation(
     pts: Any,
-    ax: Any = None,
+    ax: Axes | None = None,
     *,
     y: str = "dte_um",
     s: float = 0.3,
     color: Optional[str] = None,
     label: Optional[str] = None,
     unsettled_color: Optional[str] = "tab:orange",
-) -> Any:
+) -> Axes:
     """Bifurcation diagram: Poincare samples of ``y`` (default the dynamic
     transmission error in um) against ``speed_rpm``, one dot per sample, from
-    :func:`thermobear.bifurcation`. Speeds whose transient did not settle
+    [`thermobear.bifurcation`][thermobear.bifurcation]. Speeds whose transient did not settle
     (``settled`` False: provisional labels) are drawn in ``unsettled_color``
     (``None``: like the others)."""
     ax = get_axes(ax)
@@ -30,7 +33,7 @@ def bifurcation(
     odd = np.zeros(len(x), dtype=bool)
     if unsettled_color is not None and "settled" in pts.columns:
         odd = ~pts["settled"].to_numpy().astype(bool)
-    kw = dict(s=s, marker=".", linewidths=0)
+    kw: dict[str, Any] = dict(s=s, marker=".", linewidths=0)
     ax.scatter(x[~odd], v[~odd], c=color or "k", label=label, **kw)
     if odd.any():
         ax.scatter(x[odd], v[odd], c=unsettled_color, label="not settled", **kw)
@@ -44,8 +47,13 @@ _REGIME_CODES = {"period-1": 1, "period-2": 2, "period-n": 3, "quasi-periodic": 
 
 
 def regime_map(
-    df: Any, ax: Any = None, *, x: str = "speed_rpm", y: str = "torque_nm", regime: str = "regime"
-) -> Any:
+    df: Any,
+    ax: Axes | None = None,
+    *,
+    x: str = "speed_rpm",
+    y: str = "torque_n_m",
+    regime: str = "regime",
+) -> Axes:
     """A map of motion regimes over two parameters (e.g. input torque x
     speed): period-1, period-2, higher period, quasi-periodic, chaotic."""
     from matplotlib.colors import BoundaryNorm, ListedColormap

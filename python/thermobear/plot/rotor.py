@@ -1,20 +1,24 @@
 """Rotor-dynamics figures: Campbell diagram, vibration velocity against
 speed, spectrum. Every function takes ``ax=None`` and returns the Axes
-(matplotlib imported lazily through :func:`thermobear.plot.axes.get_axes`)."""
+(matplotlib imported lazily through ``thermobear.plot.axes.get_axes``)."""
 
 from __future__ import annotations
 
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .axes import get_axes
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = ["campbell", "vibration", "spectrum"]
 
 
-def campbell(df: Any, ax: Any = None, *, orders: Sequence[float] = (1.0,)) -> Any:
-    """Natural frequencies against speed from :func:`thermobear.campbell`
+def campbell(df: Any, ax: Axes | None = None, *, orders: ArrayLike = (1.0,)) -> Axes:
+    """Natural frequencies against speed from [`thermobear.campbell`][thermobear.campbell]
     (forward whirl solid, backward dashed) with the excitation lines
     f = order x speed / 60."""
     ax = get_axes(ax)
@@ -30,7 +34,7 @@ def campbell(df: Any, ax: Any = None, *, orders: Sequence[float] = (1.0,)) -> An
         ax.plot(speed[fw], freq[fw], "o", ms=2.5, color="C0", label="forward" if k == 0 else None)
         ax.plot(speed[bw], freq[bw], "s", ms=2.5, color="C3", label="backward" if k == 0 else None)
     s = np.array([speed.min(), speed.max()])
-    for o in orders:
+    for o in np.ravel(orders):
         ax.plot(s, o * s / 60.0, "k--", lw=1.0, label=f"{o:g}X")
     ax.set_xlabel("speed [rpm]")
     ax.set_ylabel("natural frequency [Hz]")
@@ -42,12 +46,12 @@ def campbell(df: Any, ax: Any = None, *, orders: Sequence[float] = (1.0,)) -> An
 def vibration(
     frames: Sequence[Any],
     labels: Sequence[str],
-    ax: Any = None,
+    ax: Axes | None = None,
     *,
     column: str = "velocity_rms_mm_s",
     log: bool = True,
-) -> Any:
-    """Vibration velocity against speed from :func:`thermobear.vibration`,
+) -> Axes:
+    """Vibration velocity against speed from [`thermobear.vibration`][thermobear.vibration],
     one line per frame."""
     ax = get_axes(ax)
     for df, lab in zip(frames, labels, strict=False):
@@ -63,12 +67,12 @@ def vibration(
 
 def spectrum(
     df: Any,
-    ax: Any = None,
+    ax: Axes | None = None,
     *,
     speed_rpm: Optional[float] = None,
     max_frequency_hz: Optional[float] = None,
-) -> Any:
-    """Velocity amplitude spectrum from :func:`thermobear.spectrum`; with
+) -> Axes:
+    """Velocity amplitude spectrum from [`thermobear.spectrum`][thermobear.spectrum]; with
     ``speed_rpm`` the 1X/2X/3X frequencies are marked."""
     ax = get_axes(ax)
     f = df["frequency_hz"].to_numpy()

@@ -1,11 +1,14 @@
 """Spindle figures (seed B). Every function takes ``ax=None`` and returns
-the Axes; re-exported by :mod:`thermobear.plot`."""
+the Axes; re-exported by [`thermobear.plot`][thermobear.plot]."""
 
 from __future__ import annotations
 
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 from .axes import get_axes
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = [
     "compensation_preload",
@@ -14,16 +17,30 @@ __all__ = [
     "spindle_transient",
 ]
 
-_BEARING_NODES = ("front_balls_c", "front_inner_c", "front_outer_c")
+_BEARING_NODES = (
+    "front_ball_temperature_c",
+    "front_inner_ring_temperature_c",
+    "front_outer_ring_temperature_c",
+)
 
 
-def spindle_transient(df: Any, ax: Any = None, *, columns: Optional[Sequence[str]] = None) -> Any:
-    """Node temperatures against time (min) from :func:`thermobear.transient`."""
+def spindle_transient(
+    df: Any, ax: Axes | None = None, *, columns: Optional[Sequence[str]] = None
+) -> Axes:
+    """Node temperatures against time (min) from [`thermobear.transient`][thermobear.transient]."""
     ax = get_axes(ax)
-    cols = list(columns) if columns is not None else [*_BEARING_NODES, "rotor_c", "stator_c"]
+    cols = (
+        list(columns)
+        if columns is not None
+        else [
+            *_BEARING_NODES,
+            "rotor_temperature_c",
+            "stator_temperature_c",
+        ]
+    )
     t = df["time_s"].to_numpy() / 60.0
     for c in cols:
-        ax.plot(t, df[c].to_numpy(), label=c.removesuffix("_c").replace("_", " "))
+        ax.plot(t, df[c].to_numpy(), label=c.removesuffix("_temperature_c").replace("_", " "))
     ax.set_xlabel("time [min]")
     ax.set_ylabel("temperature [°C]")
     ax.grid(True, alpha=0.3)
@@ -32,14 +49,21 @@ def spindle_transient(df: Any, ax: Any = None, *, columns: Optional[Sequence[str
 
 
 def spindle_temperatures(
-    df: Any, ax: Any = None, *, x: str = "speed_rpm", columns: Optional[Sequence[str]] = None
-) -> Any:
+    df: Any,
+    ax: Axes | None = None,
+    *,
+    x: str = "speed_rpm",
+    columns: Optional[Sequence[str]] = None,
+) -> Axes:
     """Steady temperatures against ``x`` (speed or preload) from stacked
-    :func:`thermobear.thermal_state` rows."""
+    [`thermobear.thermal_state`][thermobear.thermal_state] rows."""
     ax = get_axes(ax)
     for c in columns if columns is not None else _BEARING_NODES:
         ax.plot(
-            df[x].to_numpy(), df[c].to_numpy(), "o-", label=c.removesuffix("_c").replace("_", " ")
+            df[x].to_numpy(),
+            df[c].to_numpy(),
+            "o-",
+            label=c.removesuffix("_temperature_c").replace("_", " "),
         )
     ax.set_xlabel(x.replace("_rpm", " [rpm]").replace("_n", " [N]"))
     ax.set_ylabel("temperature [°C]")
@@ -48,9 +72,9 @@ def spindle_temperatures(
     return ax
 
 
-def optimal_preload(grid: Any, ax: Any = None) -> Any:
+def optimal_preload(grid: Any, ax: Axes | None = None) -> Axes:
     """Total radial displacement against preload, one line per speed, from
-    :func:`thermobear.spindle_grid`; the minimum of each line is marked."""
+    [`thermobear.spindle_grid`][thermobear.spindle_grid]; the minimum of each line is marked."""
     import polars as pl
 
     ax = get_axes(ax)
@@ -68,9 +92,9 @@ def optimal_preload(grid: Any, ax: Any = None) -> Any:
     return ax
 
 
-def compensation_preload(df: Any, ax: Any = None) -> Any:
+def compensation_preload(df: Any, ax: Axes | None = None) -> Axes:
     """Axial growth (um) and compensation preload (N) against speed from
-    :func:`thermobear.compensation_preload`."""
+    [`thermobear.compensation_preload`][thermobear.compensation_preload]."""
     ax = get_axes(ax)
     s = df["speed_rpm"].to_numpy()
     ax.bar(

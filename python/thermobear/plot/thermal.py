@@ -3,9 +3,12 @@ speed or load). Every function takes ``ax=None`` and returns the Axes."""
 
 from __future__ import annotations
 
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 from .axes import get_axes
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = ["heat_vs_speed", "node_temperatures", "thermal_deformations"]
 
@@ -13,13 +16,13 @@ __all__ = ["heat_vs_speed", "node_temperatures", "thermal_deformations"]
 def heat_vs_speed(
     frames: Sequence[Any],
     labels: Sequence[str],
-    ax: Any = None,
+    ax: Axes | None = None,
     *,
     column: str = "heat_w",
     x: str = "speed_rpm",
-) -> Any:
+) -> Axes:
     """Bearing heat [W] against speed for several cases (e.g. preloads),
-    from :func:`thermobear.stiffness_curve` with ``mode="thermal"``."""
+    from [`thermobear.stiffness_curve`][thermobear.stiffness_curve] with ``mode="thermal"``."""
     ax = get_axes(ax)
     for df, lab in zip(frames, labels, strict=False):
         ax.plot(df[x].to_numpy(), df[column].to_numpy(), "o-", ms=3, label=lab)
@@ -40,8 +43,8 @@ _NODES = (
 
 
 def node_temperatures(
-    df: Any, ax: Any = None, *, x: str = "speed_rpm", xlabel: Optional[str] = None
-) -> Any:
+    df: Any, ax: Axes | None = None, *, x: str = "speed_rpm", xlabel: Optional[str] = None
+) -> Axes:
     """Node temperatures [C] against ``x`` (speed or a load column)."""
     ax = get_axes(ax)
     xs = df[x].to_numpy()
@@ -55,7 +58,7 @@ def node_temperatures(
     return ax
 
 
-def thermal_deformations(df: Any, ax: Any = None) -> Any:
+def thermal_deformations(df: Any, ax: Axes | None = None) -> Axes:
     """Radial and axial thermal offsets of the groove centres (A-38, ball
     growth included), the ball growth and the centrifugal ring expansion
     [um] against speed."""

@@ -1,5 +1,5 @@
 """Seed B's own vibration model, beside the physical rotor model of
-:mod:`thermobear.rotor.response`: the shaft-end vibration velocity as the
+``thermobear.rotor.response``: the shaft-end vibration velocity as the
 once-per-revolution velocity of the front bearing's radial displacement,
 v = omega (delta_r + u_Tr) (docs/concepts/spindle-rotor.md, "Seed B's
 displacement vibration model").
@@ -19,22 +19,26 @@ is ours where its text is silent):
 2. e = delta_r + u_Tr (seed B eq. 22): delta_r the radial displacement of
    the front pair under its radial load without thermal deformation, u_Tr
    the radial thermal displacement of the front bearing (A-38); both from
-   :class:`thermobear.Spindle`'s coupled steady state. Uncoupled: u_Tr = 0.
+   [`thermobear.Spindle`][thermobear.Spindle]'s coupled steady state. Uncoupled: u_Tr = 0.
 3. The radial load is the spindle's (``radial_load_n``; seed B does not
    state one); ``runout_um`` adds a mechanical eccentricity to e.
 4. Seed B does not say whether its velocity is RMS or peak; the column
    ``velocity_mm_s`` is the amplitude omega e; ``velocity_rms_mm_s`` is
    omega e / sqrt 2 (a sinusoid's RMS) for comparison with
-   :func:`thermobear.vibration`.
+   [`thermobear.vibration`][thermobear.vibration].
 """
 
 from __future__ import annotations
 
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ..errors import ConfigError
+
+if TYPE_CHECKING:
+    import polars
 
 
 def orbit_velocity_mm_s(speed_rpm: Any, displacement_um: Any) -> np.ndarray:
@@ -47,14 +51,14 @@ def orbit_velocity_mm_s(speed_rpm: Any, displacement_um: Any) -> np.ndarray:
 
 def displacement_vibration(
     spindle: Any,
-    speeds_rpm: Optional[Sequence[float]] = None,
+    speeds_rpm: Optional[ArrayLike] = None,
     coupled: bool = True,
     *,
     radial_load_n: Optional[float] = None,
     runout_um: float = 0.0,
-) -> "polars.DataFrame":  # noqa: F821
+) -> polars.DataFrame:
     """Seed B's vibration model (module doc): shaft-end velocity
-    ``omega (delta_r + u_Tr + runout)`` of a :class:`thermobear.Spindle` (or
+    ``omega (delta_r + u_Tr + runout)`` of a [`thermobear.Spindle`][thermobear.Spindle] (or
     a spindle preset name) at each speed [rpm]. ``coupled``: include the
     radial thermal displacement u_Tr; ``radial_load_n``: the radial load at
     the nose [N] (default: the spindle's); ``runout_um``: an added
@@ -81,7 +85,7 @@ def displacement_vibration(
     for i, v in enumerate(s):
         if coupled:  # the coupled steady state: its deflection and u_Tr
             row = sp.thermal_state(float(v)).row(0, named=True)
-            therm[i] = row["radial_thermal_displacement_um"]
+            therm[i] = row["thermal_radial_displacement_um"]
         else:  # the front pair without thermal effects
             row = sp.isothermal(float(v)).row(0, named=True)
             therm[i] = 0.0

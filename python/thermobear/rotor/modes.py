@@ -3,29 +3,33 @@ critical speeds."""
 
 from __future__ import annotations
 
-from typing import Any, Callable, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .. import _native
 from .supports import _effects, _offsets, _resolve, _speeds
 
+if TYPE_CHECKING:
+    import polars
+
 
 def campbell(
     spindle: Any,
-    speeds_rpm: Optional[Sequence[float]] = None,
+    speeds_rpm: Optional[ArrayLike] = None,
     modes: int = 8,
     *,
     coupled: bool = False,
     effects: Optional[Sequence[str]] = None,
     progress: Optional[Callable[[int, int], None]] = None,
-) -> "polars.DataFrame":  # noqa: F821
+) -> polars.DataFrame:
     """Campbell diagram: damped natural frequencies of the lowest ``modes``
     modes against speed, with the rows' stiffness solved at each speed.
 
     Columns ``speed_rpm, mode, frequency_hz, damping_ratio, whirl``
     (``forward``/``backward``/``undetermined``). Default speeds 0..30,000 rpm
-    in 31 steps. ``effects`` (names of :func:`thermobear.effects`) go to the
+    in 31 steps. ``effects`` (names of [`thermobear.effects`][thermobear.effects]) go to the
     ball solver; ``"unbalanced_magnetic_pull"`` adds the UMP (off by default).
     """
     import polars as pl
@@ -46,13 +50,13 @@ def campbell(
 
 def critical_speeds(
     spindle: Any,
-    speeds_rpm: Optional[Sequence[float]] = None,
+    speeds_rpm: Optional[ArrayLike] = None,
     modes: int = 8,
     *,
     harmonic: float = 1.0,
     coupled: bool = False,
     effects: Optional[Sequence[str]] = None,
-) -> "polars.DataFrame":  # noqa: F821
+) -> polars.DataFrame:
     """Speeds where a Campbell branch crosses f = harmonic x speed / 60
     (linear interpolation on the speed grid). Columns ``speed_rpm,
     frequency_hz, branch, whirl``. Default grid 0..120,000 rpm (121

@@ -3,28 +3,34 @@ velocity and displacement against speed, the spectrum and its orders."""
 
 from __future__ import annotations
 
-from typing import Any, Callable, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .. import _native
-from ..errors import ConfigError
+from .._partial import speed_frames
+from .._types import ResponseMethod, VibrationModel
+from ..errors import ConfigError, ThermobearError
 from .supports import _effects, _offsets, _resolve, _speeds
+
+if TYPE_CHECKING:
+    import polars
 
 
 def vibration(
     spindle: Any,
-    speeds_rpm: Optional[Sequence[float]] = None,
+    speeds_rpm: Optional[ArrayLike] = None,
     coupled: bool = True,
     unbalance_grade: Optional[float] = None,
     unbalance_g_mm: Optional[float] = None,
-    method: str = "frequency",
+    method: ResponseMethod = "frequency",
     *,
     duration_s: float = 0.1,
     effects: Optional[Sequence[str]] = None,
     progress: Optional[Callable[[int, int], None]] = None,
-    model: str = "rotor",
-) -> "polars.DataFrame":  # noqa: F821
+    model: VibrationModel = "rotor",
+) -> polars.DataFrame:
     """Shaft-end (tool nose) vibration velocity against speed under a
     residual unbalance at the rotor core: ISO 21940 grade
     ``unbalance_grade`` [mm/s] at 30,000 rpm (default G2.5), or
@@ -32,9 +38,10 @@ def vibration(
 
     ``model="seed-b"``: seed B's own model instead of the rotor's forced
     response -- the velocity omega x (bearing radial displacement + radial
-    thermal displacement) of :func:`thermobear.rotor.displacement_vibration`
+    thermal displacement) of
+    [`thermobear.rotor.displacement_vibration`][thermobear.rotor.displacement_vibration]
     (its assumptions are listed there); ``spindle`` must then be a
-    :class:`thermobear.Spindle` or a preset name, and the unbalance,
+    [`thermobear.Spindle`][thermobear.Spindle] or a preset name, and the unbalance,
     ``method`` and ``effects`` arguments do not apply.
 
     ``method="frequency"``: steady unbalance response with the linearised
@@ -59,22 +66,31 @@ def vibration(
         raise ConfigError(f"invalid model = {model!r}: 'rotor' or 'seed-b'")
     mat, preload, _ = _resolve(spindle)
     s = _speeds(speeds_rpm, np.linspace(3_000.0, 30_000.0, 10))
-    d = _native.rotor_vibration(
-        mat,
-        preload,
-        s,
-        unbalance_grade=unbalance_grade,
-        unbalance_g_mm=unbalance_g_mm,
-        method=method,
-        duration_s=float(duration_s),
-        effects=_effects(effects),
-        offsets=_offsets(spindle, s, coupled),
-        progress=progress,
-    )
-    u = d.pop("unbalance_g_mm")
-    return pl.DataFrame(d).with_columns(
-        pl.lit(bool(coupled)).alias("coupled"), pl.lit(float(u)).alias("unbalance_g_mm")
-    )
+
+    def frame(d: Any, _speeds_done: Any = None) -> polars.DataFrame:
+        d = dict(d)
+        u = d.pop("unbalance_g_mm")
+        return pl.DataFrame(d).with_columns(
+            pl.lit(bool(coupled)).alias("coupled"), pl.lit(float(u)).alias("unbalance_g_mm")
+        )
+
+    try:
+        d = _native.rotor_vibration(
+            mat,
+            preload,
+            s,
+            unbalance_grade=unbalance_grade,
+            unbalance_g_mm=unbalance_g_mm,
+            method=method,
+            duration_s=float(duration_s),
+            effects=_effects(effects),
+            offsets=_offsets(spindle, s, coupled),
+            progress=progress,
+        )
+    except ThermobearError as e:
+        speed_frames(e, s, frame)
+        raise
+    return frame(d)
 
 
 def spectrum(
@@ -87,12 +103,12 @@ def spectrum(
     unbalance_grade: Optional[float] = None,
     unbalance_g_mm: Optional[float] = None,
     effects: Optional[Sequence[str]] = None,
-) -> "polars.DataFrame":  # noqa: F821
+) -> polars.DataFrame:
     """Amplitude spectrum (Hann window) of the nose velocity from a time
     response at ``speed_rpm`` (nonlinear ball forces by default). Columns
     ``frequency_hz, velocity_mm_s``. The 1X/2X/3X amplitudes at the exact
     order frequencies, RMS and peak of the same record:
-    :func:`spectrum_orders`."""
+    [`spectrum_orders`][thermobear.spectrum_orders]."""
     import polars as pl
 
     d = _spectrum_native(
@@ -111,8 +127,8 @@ def spectrum_orders(
     unbalance_grade: Optional[float] = None,
     unbalance_g_mm: Optional[float] = None,
     effects: Optional[Sequence[str]] = None,
-) -> "polars.DataFrame":  # noqa: F821
-    """1X, 2X, 3X of the same time response as :func:`spectrum`: columns
+) -> polars.DataFrame:
+    """1X, 2X, 3X of the same time response as [`spectrum`][thermobear.spectrum]: columns
     ``order, frequency_hz, velocity_mm_s`` plus ``velocity_rms_mm_s`` and
     ``velocity_peak_mm_s`` of the record."""
     import polars as pl
@@ -142,7 +158,7 @@ def _spectrum_native(
     unbalance_grade: Optional[float],
     unbalance_g_mm: Optional[float],
     effects: Optional[Sequence[str]],
-) -> dict:
+) -> dict[str, Any]:
     mat, preload, _ = _resolve(spindle)
     return _native.rotor_spectrum(
         mat,

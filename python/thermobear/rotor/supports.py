@@ -1,11 +1,13 @@
 """The spindle a rotor model runs on: its row material, preload and the
-thermal raceway offsets of its bearings (the protocol :mod:`thermobear.rotor` reads)."""
+thermal raceway offsets of its bearings (the protocol [`thermobear.rotor`][thermobear.rotor]
+reads)."""
 
 from __future__ import annotations
 
 from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ..errors import ConfigError
 
@@ -19,17 +21,18 @@ SPINDLE_PRESETS: dict[str, str] = {
 _DEFAULT_PRELOAD_N = 400.0
 
 
-def _resolve(spindle: Any) -> tuple[str, float, Optional[Callable[[float], dict]]]:
+def _resolve(spindle: Any) -> tuple[str, float, Optional[Callable[[float], dict[str, Any]]]]:
     """(row material, preload [N], offsets provider or None)."""
     if isinstance(spindle, str):
         name, preload, provider = spindle, _DEFAULT_PRELOAD_N, None
     else:
-        name = getattr(spindle, "rotor_preset_name", None)
-        if name is None:
+        preset = getattr(spindle, "rotor_preset_name", None)
+        if preset is None:
             raise ConfigError(
                 f"spindle={spindle!r}: pass a preset name {sorted(SPINDLE_PRESETS)} or an "
                 "object with a rotor_preset_name attribute (see thermobear.rotor)"
             )
+        name = preset
         preload = float(getattr(spindle, "preload_n", _DEFAULT_PRELOAD_N))
         provider = getattr(spindle, "raceway_offsets", None)
     if name not in SPINDLE_PRESETS:
@@ -49,7 +52,7 @@ def _pair(value: Any, pair: str, speed: float) -> tuple[float, float]:
     return radial, axial
 
 
-def _offsets(spindle: Any, speeds: np.ndarray, coupled: bool) -> Optional[dict]:
+def _offsets(spindle: Any, speeds: np.ndarray, coupled: bool) -> Optional[dict[str, Any]]:
     """The offsets dict for the native call (None: uncoupled)."""
     if not coupled:
         return None
@@ -76,7 +79,7 @@ def _offsets(spindle: Any, speeds: np.ndarray, coupled: bool) -> Optional[dict]:
     return {"speed_rpm": [float(n) for n in grid], **cols}
 
 
-def _speeds(speeds_rpm: Optional[Sequence[float]], default: np.ndarray) -> np.ndarray:
+def _speeds(speeds_rpm: Optional[ArrayLike], default: np.ndarray) -> np.ndarray:
     s = default if speeds_rpm is None else np.asarray(speeds_rpm, dtype=float).ravel()
     return np.ascontiguousarray(s, dtype=float)
 

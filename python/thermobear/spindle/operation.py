@@ -3,13 +3,17 @@ compensating preload against speed."""
 
 from __future__ import annotations
 
-from typing import Any, Callable, Optional, Sequence
+from typing import Any, Callable, Optional
 
 import numpy as np
+from numpy.typing import ArrayLike
 
+from .._deprecation import renamed_kwargs
+from .._names import renamed_spindle_columns, spindle_node, temperature_column
 from .spindle import SEED_B_SPRING_RATE_N_PER_UM, Spindle, _check
 
 
+@renamed_kwargs(initial_c="initial_temperature_c")
 def transient(
     spindle: Spindle,
     *,
@@ -17,11 +21,13 @@ def transient(
     duration_s: float,
     dt_s: float = 5.0,
     record_every: int = 1,
-    initial_c: Optional[float] = None,
+    initial_temperature_c: Optional[float] = None,
     mechanics_update_k: float = 0.05,
 ) -> Any:
-    """Temperatures in time from a uniform start (default: ambient) at
-    constant speed: ``time_s`` and one ``<node>_c`` column per node. The
+    """Temperatures in time from a uniform start ``initial_temperature_c``
+    (default: ambient) at constant speed: ``time_s`` and one
+    ``<node>_temperature_c`` column per node (``front_outer_ring_temperature_c``
+    ...; the nodes of [`Spindle.node_names`][thermobear.Spindle.node_names]). The
     bearing heat follows the temperatures (quasi-steady mechanics, re-solved
     when a node moved more than ``mechanics_update_k``)."""
     import polars as pl
@@ -32,46 +38,47 @@ def transient(
         float(duration_s),
         dt_s=float(dt_s),
         record_every=int(record_every),
-        initial_c=initial_c,
+        initial_c=initial_temperature_c,
         mechanics_update_k=float(mechanics_update_k),
     )
     t = np.asarray(d["temperatures_c"])
     cols: dict[str, Any] = {"time_s": np.asarray(d["time_s"])}
     for i, name in enumerate(d["node_names"]):
-        cols[f"{name}_c"] = t[:, i]
+        cols[temperature_column(spindle_node(name))] = t[:, i]
     return pl.DataFrame(cols)
 
 
 def spindle_grid(
     spindle: Spindle,
     *,
-    speeds_rpm: Sequence[float],
-    preloads_n: Sequence[float],
-    radial_loads_n: Optional[Sequence[float]] = None,
+    speeds_rpm: ArrayLike,
+    preloads_n: ArrayLike,
+    radial_loads_n: Optional[ArrayLike] = None,
     progress: Optional[Callable[[int, int], Any]] = None,
 ) -> Any:
     """Speed x preload x load grid of coupled steady states (threads, GIL
     released): temperatures, operating preload, heat, radial displacements
     (mechanical, thermal, total) and radial stiffness with and without
-    thermal effects."""
+    thermal effects (``k_xx_n_per_m``, ``k_xx_isothermal_n_per_m``: the front
+    pair's entry of the full tangent stiffness)."""
     import polars as pl
 
     sp = _check(spindle)
-    loads = [sp.radial_load_n] if radial_loads_n is None else list(radial_loads_n)
+    loads = [sp.radial_load_n] if radial_loads_n is None else list(np.ravel(radial_loads_n))
     d = sp._native.grid(
-        [float(v) for v in speeds_rpm],
-        [float(v) for v in preloads_n],
+        [float(v) for v in np.ravel(speeds_rpm)],
+        [float(v) for v in np.ravel(preloads_n)],
         [float(v) for v in loads],
         progress,
     )
-    return pl.DataFrame({k: np.asarray(v) for k, v in d.items()})
+    return pl.DataFrame({k: np.asarray(v) for k, v in renamed_spindle_columns(dict(d)).items()})
 
 
 def optimal_preload(
     spindle: Spindle,
     *,
-    speeds_rpm: Sequence[float],
-    preloads_n: Sequence[float],
+    speeds_rpm: ArrayLike,
+    preloads_n: ArrayLike,
     radial_n: Optional[float] = None,
     progress: Optional[Callable[[int, int], Any]] = None,
 ) -> Any:
@@ -96,7 +103,7 @@ def optimal_preload(
         pl.col("total_radial_displacement_um").alias("min_radial_displacement_um"),
         pl.col("mechanical_radial_displacement_um"),
         pl.col("thermal_radial_displacement_um"),
-        pl.col("front_balls_c"),
+        pl.col("front_ball_temperature_c"),
         pl.col("radial_load_n"),
     )
 
@@ -104,7 +111,7 @@ def optimal_preload(
 def compensation_preload(
     spindle: Spindle,
     *,
-    speeds_rpm: Sequence[float],
+    speeds_rpm: ArrayLike,
     spring_rate_n_per_um: float = SEED_B_SPRING_RATE_N_PER_UM,
     progress: Optional[Callable[[int, int], Any]] = None,
 ) -> Any:
@@ -118,7 +125,7 @@ def compensation_preload(
 
     sp = _check(spindle)
     d = sp._native.compensation(
-        [float(v) for v in speeds_rpm], float(spring_rate_n_per_um), progress
+        [float(v) for v in np.ravel(speeds_rpm)], float(spring_rate_n_per_um), progress
     )
     df = pl.DataFrame({k: np.asarray(v) for k, v in d.items()})
     return df.with_columns(pl.lit(float(spring_rate_n_per_um)).alias("spring_rate_n_per_um"))

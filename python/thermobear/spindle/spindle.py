@@ -1,4 +1,4 @@
-"""The :class:`Spindle`: its presets, options, assumptions and coupled
+"""The [`Spindle`][thermobear.Spindle]: its presets, options, assumptions and coupled
 thermal steady state; the table rows of a solved state."""
 
 from __future__ import annotations
@@ -8,14 +8,17 @@ from typing import Any, Optional, Sequence
 import numpy as np
 
 from .. import _native
+from .._deprecation import renamed_kwargs, warn_renamed
+from .._names import spindle_node, temperature_column
+from .._types import PreloadKind
 
 #: Spring rate implied by seed B Fig. 17: 6.45 N / 17.92 um.
 SEED_B_SPRING_RATE_N_PER_UM = 6.45 / 17.92
 
 
 class Spindle:
-    """A motorized spindle. Build with :meth:`preset`, change settings with
-    :meth:`with_options` (returns a new spindle)."""
+    """A motorized spindle. Build with [`preset`][thermobear.Spindle.preset], change settings with
+    [`with_options`][thermobear.Spindle.with_options] (returns a new spindle)."""
 
     def __init__(self, native: Any) -> None:
         self._native = native
@@ -30,15 +33,16 @@ class Spindle:
     def preset_names() -> list[str]:
         return list(_native.Spindle.preset_names())
 
+    @renamed_kwargs(spin_friction="spin_friction_coefficient")
     def with_options(
         self,
         *,
         preload_n: Optional[float] = None,
-        preload_kind: Optional[str] = None,
+        preload_kind: Optional[PreloadKind] = None,
         spring_rate_n_per_um: Optional[float] = None,
         radial_load_n: Optional[float] = None,
         effects: Optional[Sequence[str]] = None,
-        spin_friction: Optional[float] = None,
+        spin_friction_coefficient: Optional[float] = None,
         **heat: Any,
     ) -> "Spindle":
         """A copy with other settings; ``preload_kind`` is ``"rigid"`` or
@@ -50,8 +54,10 @@ class Spindle:
         ``churning_oil_fraction`` when they are not given),
         ``lubrication_factor_f0``, ``churning_oil_fraction`` (ball-drag oil
         volume fraction, 0..1), ``skf_series``, ``sliding_friction_ehl``,
-        ``replenishment_krs``, ``seal_moment_nmm`` (as for
-        :func:`thermobear.thermal_state`)."""
+        ``replenishment_krs``, ``seal_moment_n_m`` (as for
+        [`thermobear.thermal_state`][thermobear.thermal_state]). ``spin_friction_coefficient``:
+        mu_s of the spin moment (default 0.05, the same as a single
+        bearing's)."""
         return Spindle(
             self._native.with_options(
                 preload_n=preload_n,
@@ -59,7 +65,7 @@ class Spindle:
                 spring_rate_n_per_um=spring_rate_n_per_um,
                 radial_load_n=radial_load_n,
                 effects=list(effects) if effects is not None else None,
-                spin_friction=spin_friction,
+                spin_friction=spin_friction_coefficient,
                 heat=_heat_args(heat),
             )
         )
@@ -86,12 +92,17 @@ class Spindle:
 
     @property
     def node_names(self) -> list[str]:
-        return list(self._native.node_names)
+        """The thermal network's nodes (``front_outer_ring``, ``rotor`` ...);
+        each is the ``<node>_temperature_c`` column of the results."""
+        return [spindle_node(n) for n in self._native.node_names]
 
     @property
     def assumptions(self) -> dict[str, Any]:
         """Every assumed number and modelling choice."""
-        return dict(self._native.assumptions())
+        a = dict(self._native.assumptions())
+        if "spin_friction" in a:
+            a["spin_friction_coefficient"] = a.pop("spin_friction")
+        return a
 
     def __repr__(self) -> str:
         return (
@@ -104,15 +115,17 @@ class Spindle:
         speed_rpm: float,
         preload_n: Optional[float] = None,
         radial_n: Optional[float] = None,
-        preload_kind: Optional[str] = None,
+        preload_kind: Optional[PreloadKind] = None,
         effects: Optional[Sequence[str]] = None,
         axial_n: Optional[float] = None,
+        spin_friction_coefficient: Optional[float] = None,
         **unused: Any,
     ) -> Any:
         """Coupled steady state at one speed as a one-row DataFrame: node
-        temperatures (``<node>_c``), heat, preload, axial growth, radial
+        temperatures (``<node>_temperature_c``), heat, preload, axial growth, radial
         thermal displacement, front-bearing contact angles and loads,
-        radial stiffness, the radial load each pair carries
+        the front pair's stiffness (``k_xx_n_per_m``, ``k_zz_n_per_m``: entries
+        of the full tangent stiffness), the radial load each pair carries
         (``<pair>_pair_radial_x_n``: nose load side, ``_y_n``: the static
         unbalanced magnetic pull ``magnetic_pull_n``, which acts with the
         ``unbalanced_magnetic_pull`` effect on), convergence report."""
@@ -125,6 +138,9 @@ class Spindle:
                 f"invalid axial_n = {axial_n}: a spindle's axial load is its preload; "
                 "give preload_n"
             )
+        if "spin_friction" in unused:
+            warn_renamed("spin_friction", "spin_friction_coefficient", stacklevel=3)
+            spin_friction_coefficient = unused.pop("spin_friction")
         heat = {k: unused.pop(k) for k in list(unused) if k in SPINDLE_HEAT_OPTIONS}
         if unused:
             raise ConfigError(
@@ -132,12 +148,14 @@ class Spindle:
                 "preload_n, radial_n, preload_kind, effects and the heat-model options"
             )
         sp = self
-        if any(v is not None for v in (preload_n, radial_n, preload_kind, effects, *heat.values())):
+        given = (preload_n, radial_n, preload_kind, effects, spin_friction_coefficient)
+        if any(v is not None for v in (*given, *heat.values())):
             sp = self.with_options(
                 preload_n=preload_n,
                 radial_load_n=radial_n,
                 preload_kind=preload_kind,
                 effects=effects,
+                spin_friction_coefficient=spin_friction_coefficient,
                 **heat,
             )
         d = sp._native.steady_state(float(speed_rpm))
@@ -145,11 +163,67 @@ class Spindle:
 
     _thermal_state = thermal_state
 
+    def thermal_state_many(
+        self,
+        points: Any,
+        *,
+        progress: Any = None,
+        **options: Any,
+    ) -> Any:
+        """[`thermal_state`][thermobear.Spindle.thermal_state] at many operating points: ``points``
+        a polars DataFrame (or a mapping of columns) with ``speed_rpm`` and
+        optional ``preload_n``, ``radial_n`` (absent: the spindle's own);
+        other columns are carried through. ``options`` (``preload_kind``,
+        ``effects``, the heat-model keywords) as in
+        [`thermal_state`][thermobear.Spindle.thermal_state],
+        shared by every point; ``progress(done, total)`` after each point.
+
+        Returns the input columns followed by the
+        [`thermal_state`][thermobear.Spindle.thermal_state]
+        columns, then ``ok``, ``error_kind``, ``error``: a point that fails
+        (a runaway, no convergence) is a row with its error and null
+        outputs; nothing is raised for it (as
+        [`thermobear.thermal_state_many`][thermobear.thermal_state_many] for a bearing)."""
+        from ..bearing.batch import join_inputs, operating_frame
+        from ..errors import ConfigError, ThermobearError
+
+        frame = operating_frame(points, _INPUTS)
+        if "speed_rpm" not in frame.columns:
+            raise ConfigError(
+                f"invalid points = frame with columns {frame.columns}: needs speed_rpm"
+            )
+        rows: list[Optional[dict[str, Any]]] = []
+        errors: list[tuple[bool, Optional[str], Optional[str]]] = []
+        for i, p in enumerate(frame.iter_rows(named=True)):
+            preload, radial = p.get("preload_n"), p.get("radial_n")
+            try:
+                row = self.thermal_state(
+                    float(p["speed_rpm"]),
+                    preload_n=None if preload is None else float(preload),
+                    radial_n=None if radial is None else float(radial),
+                    **options,
+                ).row(0, named=True)
+                rows.append(row)
+                errors.append((True, None, None))
+            except ConfigError:
+                raise  # a bad option or input fails the call, not a point
+            except ThermobearError as e:
+                rows.append(None)
+                errors.append((False, type(e).__name__, str(e)))
+            if progress is not None:
+                progress(i + 1, frame.height)
+        out = _rows_frame(rows, errors)
+        # the operating inputs come back as the points gave them
+        return join_inputs(frame, out.drop([c for c in frame.columns if c in _INPUTS]))
+
+    _thermal_state_many = thermal_state_many
+
     # -- the seam to the rotor model (thermobear.rotor) ---------------------
     @property
     def rotor_preset_name(self) -> str:
-        """The rotor model of this spindle for :func:`thermobear.campbell`,
-        :func:`thermobear.vibration` and :func:`thermobear.spectrum`."""
+        """The rotor model of this spindle for [`thermobear.campbell`][thermobear.campbell],
+        [`thermobear.vibration`][thermobear.vibration] and
+        [`thermobear.spectrum`][thermobear.spectrum]."""
         from ..errors import ConfigError
 
         name = self.name
@@ -165,9 +239,11 @@ class Spindle:
         the coupled bearing solve uses, A-38). Makes ``coupled=True`` work in
         the rotor functions."""
         d = self._native.steady_state(float(speed_rpm))
-        front = tuple(float(v) for v in d["front_raceway_offsets_m"])
-        rear = tuple(float(v) for v in d["rear_raceway_offsets_m"])
-        return {"front": front, "rear": rear}
+        (front_r, front_a), (rear_r, rear_a) = (
+            d["front_raceway_offsets_m"],
+            d["rear_raceway_offsets_m"],
+        )
+        return {"front": (float(front_r), float(front_a)), "rear": (float(rear_r), float(rear_a))}
 
     def isothermal(self, speed_rpm: float) -> Any:
         """Front pair without thermal effects at speed (one-row DataFrame)."""
@@ -179,7 +255,7 @@ class Spindle:
         return pl.DataFrame([row])
 
 
-#: Heat-model keywords of :meth:`Spindle.with_options`.
+#: Heat-model keywords of ``Spindle.with_options``.
 SPINDLE_HEAT_OPTIONS = (
     "heat_model",
     "lubrication",
@@ -188,14 +264,16 @@ SPINDLE_HEAT_OPTIONS = (
     "skf_series",
     "sliding_friction_ehl",
     "replenishment_krs",
-    "seal_moment_nmm",
+    "seal_moment_n_m",
 )
 
 
-def _heat_args(heat: dict) -> Optional[dict]:
+def _heat_args(heat: dict[str, Any]) -> Optional[dict[str, Any]]:
     """The heat keywords as the native dict (None: nothing given)."""
     from ..errors import ConfigError
+    from ..thermal.state import seal_moment_option
 
+    heat = seal_moment_option(heat)
     for k in heat:
         if k not in SPINDLE_HEAT_OPTIONS:
             raise ConfigError(f"invalid argument = {k!r}: known: {', '.join(SPINDLE_HEAT_OPTIONS)}")
@@ -203,14 +281,15 @@ def _heat_args(heat: dict) -> Optional[dict]:
         return None
     out = {k: heat.get(k) for k in SPINDLE_HEAT_OPTIONS}
     for k in ("lubrication_factor_f0", "churning_oil_fraction", "sliding_friction_ehl",
-              "replenishment_krs", "seal_moment_nmm"):  # fmt: skip
-        out[k] = None if out[k] is None else float(out[k])
+              "replenishment_krs", "seal_moment_n_m"):  # fmt: skip
+        v = out[k]
+        out[k] = None if v is None else float(v)
     for k in ("heat_model", "lubrication", "skf_series"):
         out[k] = None if out[k] is None else str(out[k])
     return out
 
 
-def _pair_row(p: dict) -> dict:
+def _pair_row(p: dict[str, Any]) -> dict[str, Any]:
     k = np.asarray(p["stiffness_matrix"])
     return {
         "operating_preload_n": p["preload_n"],
@@ -220,19 +299,19 @@ def _pair_row(p: dict) -> dict:
         "outer_contact_angle_deg": float(np.mean(p["outer_contact_angle_deg"])),
         "inner_load_max_n": float(np.max(p["inner_load_n"])),
         "outer_load_max_n": float(np.max(p["outer_load_n"])),
-        "radial_stiffness_n_per_m": float(k[0, 0]),
-        "axial_stiffness_n_per_m": float(k[2, 2]),
+        "k_xx_n_per_m": float(k[0, 0]),
+        "k_zz_n_per_m": float(k[2, 2]),
     }
 
 
-def _state_row(d: dict, sp: Spindle) -> dict:
+def _state_row(d: dict[str, Any], sp: Spindle) -> dict[str, Any]:
     row: dict[str, Any] = {
         "speed_rpm": d["speed_rpm"],
         "preload_n": sp.preload_n,
         "preload_kind": sp.preload_kind,
     }
     for name, t in zip(d["node_names"], d["temperatures_c"], strict=False):
-        row[f"{name}_c"] = t
+        row[temperature_column(spindle_node(name))] = t
     row.update(_pair_row(d["front"]))
     row["rear_operating_preload_n"] = d["rear"]["preload_n"]
     row["front_bearing_heat_w"] = d["bearing_heat_w"][0]
@@ -248,7 +327,7 @@ def _state_row(d: dict, sp: Spindle) -> dict:
     row["total_heat_w"] = d["total_heat_w"]
     row["boundary_flow_w"] = d["boundary_flow_w"]
     row["axial_growth_um"] = d["axial_growth_m"] * 1e6
-    row["radial_thermal_displacement_um"] = d["front_radial_thermal_displacement_m"] * 1e6
+    row["thermal_radial_displacement_um"] = d["front_radial_thermal_displacement_m"] * 1e6
     row["ball_growth_um"] = d["front_ball_growth_m"] * 1e6
     row["iterations"] = d["iterations"]
     row["temperature_change_k"] = d["temperature_change_k"]
@@ -261,3 +340,22 @@ def _check(spindle: Any) -> Spindle:
     if not isinstance(spindle, Spindle):
         raise ConfigError(f"invalid spindle = {type(spindle).__name__}: need a thermobear.Spindle")
     return spindle
+
+
+#: Operating columns of ``Spindle.thermal_state_many`` points.
+_INPUTS = ("speed_rpm", "preload_n", "radial_n")
+
+
+def _rows_frame(rows: list[Any], errors: list[Any]) -> Any:
+    """The state rows of a batch (None: a failed point, its outputs null),
+    then ``ok``, ``error_kind``, ``error``."""
+    import polars as pl
+
+    keys = next((list(r) for r in rows if r is not None), [])
+    data = {k: [None if r is None else r[k] for r in rows] for k in keys}
+    report = {
+        "ok": pl.Series("ok", [e[0] for e in errors], dtype=pl.Boolean),
+        "error_kind": pl.Series("error_kind", [e[1] for e in errors], dtype=pl.String),
+        "error": pl.Series("error", [e[2] for e in errors], dtype=pl.String),
+    }
+    return pl.DataFrame({**data, **report}, strict=False)

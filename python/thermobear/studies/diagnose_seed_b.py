@@ -21,7 +21,7 @@ quantity, residual/sigma, and the two models' outer-ring temperatures and
 vibration against speed (coarse speeds in quick mode).
 
 Then the same story with the effect hidden on purpose
-(:func:`synthetic_seed_b`): data from our model with thermal displacement,
+(``synthetic_seed_b``): data from our model with thermal displacement,
 diagnosed from the model without it, with its before/after gap.
 """
 
@@ -31,10 +31,10 @@ from pathlib import Path
 
 import numpy as np
 
+from ..diagnosis import diagnose
 from ..diagnosis.spindle_spec import (
     THERMAL_DISPLACEMENT_EFFECTS,
     SpindleModelSpec,
-    diagnose_spindle,
     seed_b_measurements,
 )
 from ..spindle import Spindle
@@ -45,8 +45,8 @@ from .output import save_figure, write_table
 #: uncoupled: the maximum error 2.82 mm/s there, so 18.92 - 2.82 = 16.10;
 #: front/rear outer-ring simulation 2.7 % / 1.3 % below 33.7 / 30.1 C.
 PAPER_SIMULATION = {
-    "temperature_c:front_outer": (33.7 / 1.027, 33.7 / 1.027),
-    "temperature_c:rear_outer": (30.1 / 1.013, 30.1 / 1.013),
+    "front_outer_ring_temperature_c": (33.7 / 1.027, 33.7 / 1.027),
+    "rear_outer_ring_temperature_c": (30.1 / 1.013, 30.1 / 1.013),
     "velocity_rms_mm_s": (18.92 - 2.82, 18.78),
 }
 
@@ -76,7 +76,7 @@ def study_diagnose_seed_b(out: Path, quick: bool) -> list[Path]:
     measured = seed_b_measurements()
     # two distinct speeds only: no held-out speed band is possible; the gap
     # table is over all three points
-    d = diagnose_spindle(base, measured, holdout=None)
+    d = diagnose(base, measured, holdout=None)
 
     q = measured["quantity"].to_list()
     p0, p1 = base.predict(measured), coupled.predict(measured)
@@ -121,8 +121,8 @@ def study_diagnose_seed_b(out: Path, quick: bool) -> list[Path]:
 #: the look-alike check suggests for separating thermal displacement from a
 #: vibrometer gain error.
 SYNTHETIC_QUANTITIES = (
-    "temperature_c:front_outer",
-    "temperature_c:rear_outer",
+    "front_outer_ring_temperature_c",
+    "rear_outer_ring_temperature_c",
     "velocity_rms_mm_s",
     "axial_growth_um",
 )
@@ -144,14 +144,14 @@ def synthetic_seed_b(base: SpindleModelSpec, out: Path, quick: bool) -> list[Pat
     cond = pl.DataFrame(
         {
             "speed_rpm": np.repeat(speeds, len(qs)),
-            "axial_n": 400.0,
+            "preload_n": 400.0,
             "radial_n": 0.0,
             "quantity": qs * len(speeds),
         }
     )
     # typical noise (SPINDLE_QUANTITIES), a fixed seed
     measured = synthetic_measurements(truth, cond, 1.0, seed=20261122)
-    d = diagnose_spindle(base, measured)
+    d = diagnose(base, measured)
     files = write_table(measured, out, "diagnose_seed_b_synthetic_measured")
     files += write_table(d.gap, out, "diagnose_seed_b_synthetic_gap")
     files += write_table(
@@ -233,8 +233,8 @@ def _runout_reading(d) -> str:
 
 
 _CURVE_COLUMNS = {
-    "temperature_c:front_outer": "front_outer_{}_thermal_displacement_c",
-    "temperature_c:rear_outer": "rear_outer_{}_thermal_displacement_c",
+    "front_outer_ring_temperature_c": "front_outer_ring_temperature_{}_thermal_displacement_c",
+    "rear_outer_ring_temperature_c": "rear_outer_ring_temperature_{}_thermal_displacement_c",
     "velocity_rms_mm_s": "velocity_rms_{}_thermal_displacement_mm_s",
 }
 
@@ -246,7 +246,7 @@ def _curves(base, coupled, measured, out: Path, quick: bool) -> list[Path]:
     from ..plot.axes import get_axes
 
     speeds = np.arange(6000.0, 18001.0, 6000.0 if quick else 1000.0)
-    cond = pl.DataFrame({"speed_rpm": speeds, "axial_n": 400.0, "radial_n": 0.0})
+    cond = pl.DataFrame({"speed_rpm": speeds, "preload_n": 400.0, "radial_n": 0.0})
     rows = {"speed_rpm": speeds}
     for label, m in (("without", base), ("with", coupled)):
         p = m.predict(cond)
@@ -259,7 +259,7 @@ def _curves(base, coupled, measured, out: Path, quick: bool) -> list[Path]:
     ax = get_axes(None)
     for i, part in enumerate(("front_outer", "rear_outer")):
         for label, ls in (("without", "--"), ("with", "-")):
-            col = _CURVE_COLUMNS[f"temperature_c:{part}"].format(label)
+            col = _CURVE_COLUMNS[f"{part}_ring_temperature_c"].format(label)
             ax.plot(
                 speeds,
                 table[col].to_numpy(),
@@ -267,7 +267,7 @@ def _curves(base, coupled, measured, out: Path, quick: bool) -> list[Path]:
                 color=f"C{i}",
                 label=f"{part}, {label} thermal displacement",
             )
-        k = [j for j, qq in enumerate(mq) if qq.endswith(part)]
+        k = [j for j, qq in enumerate(mq) if qq == f"{part}_ring_temperature_c"]
         ax.plot(ms[k], my[k], "o", color=f"C{i}", label=f"{part}, seed B measured")
     ax.set_xlabel("speed [rpm]")
     ax.set_ylabel("outer-ring temperature [C]")

@@ -39,10 +39,10 @@ def study_diagnose(out: Path, quick: bool) -> list[Path]:
     # seed B's test speeds: 6000-18,000 rpm in 1000 rpm steps
     speeds = np.arange(6000.0, 18001.0, 2000.0 if quick else 1000.0)
     qs = [
-        "temperature_c:To",
-        "temperature_c:Ti",
-        "temperature_c:Tb",
-        "radial_stiffness_n_per_m",
+        "outer_ring_temperature_c",
+        "inner_ring_temperature_c",
+        "ball_temperature_c",
+        "radial_stiffness_seed_n_per_m",
         "heat_w",
     ]
     cond = pl.DataFrame(
@@ -67,6 +67,6 @@ def study_diagnose(out: Path, quick: bool) -> list[Path]:
         f"hidden: churning_oil_fraction = {CHURNING_HIDDEN} (baseline 0)\n" + d.summary() + "\n"
     )
     files.append(verdict)
-    files.append(save_figure(plot.diagnosis_fit(d, "temperature_c:Tb"), out, "diagnose_fit_Tb"))
+    files.append(save_figure(plot.diagnosis_fit(d, "ball_temperature_c"), out, "diagnose_fit_Tb"))
     files.append(save_figure(plot.diagnosis_residuals(d), out, "diagnose_residuals"))
     return files

@@ -53,12 +53,12 @@ def study_seed_a_bearing(out: Path, quick: bool = False) -> list[Path]:
     both = _contact_summary([const, speed], ["constant", "speed"])
     files += write_table(both, out, "seed_a_stiffness_vs_speed")
     ax = plot.stiffness_cases(
-        [const, speed], ["constant", "speed, no thermal"], column="radial_stiffness_n_per_m"
+        [const, speed], ["constant", "speed, no thermal"], column="radial_stiffness_seed_n_per_m"
     )
     ax.set_title("6208, Fa = 2680.9 N, Fr = 1189.9 N: radial stiffness")
     files.append(save_figure(ax, out, "seed_a_radial_stiffness"))
     ax = plot.stiffness_cases(
-        [const, speed], ["constant", "speed, no thermal"], column="axial_stiffness_n_per_m"
+        [const, speed], ["constant", "speed, no thermal"], column="axial_stiffness_seed_n_per_m"
     )
     ax.set_title("6208: axial stiffness")
     files.append(save_figure(ax, out, "seed_a_axial_stiffness"))

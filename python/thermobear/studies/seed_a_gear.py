@@ -121,7 +121,7 @@ def _per_speed(pts: Any) -> Any:
     return pts.drop("dte_um").unique(subset=["case", "direction", "speed_rpm"], maintain_order=True)
 
 
-def _hysteresis(per_speed: Any, torque_nm: float) -> Any:
+def _hysteresis(per_speed: Any, torque_n_m: float) -> Any:
     """Speed ranges where the accelerating and decelerating sweeps end on
     different motions (regime or impact differ, or the peak-to-peak
     dynamic TE differs by more than 20 %): coexisting solutions."""
@@ -152,7 +152,7 @@ def _hysteresis(per_speed: Any, torque_nm: float) -> Any:
                 k += 1
             rows.append(
                 {
-                    "torque_nm": torque_nm,
+                    "torque_n_m": torque_n_m,
                     "case": case,
                     "speed_from_rpm": float(s[i]),
                     "speed_to_rpm": float(s[k]),
@@ -163,7 +163,7 @@ def _hysteresis(per_speed: Any, torque_nm: float) -> Any:
             )
             i = k + 1
     schema = {
-        "torque_nm": pl.Float64,
+        "torque_n_m": pl.Float64,
         "case": pl.Utf8,
         "speed_from_rpm": pl.Float64,
         "speed_to_rpm": pl.Float64,
@@ -233,7 +233,7 @@ def _support_stiffness(g: Any, out: Path) -> tuple:
 
     files: list[Path] = []
     seed, notes = _systems(g)
-    light, _ = _systems(g, torque_nm=LIGHT_TORQUE_NM, te_amplitude_um=LIGHT_TE_UM)
+    light, _ = _systems(g, torque_n_m=LIGHT_TORQUE_NM, te_amplitude_um=LIGHT_TE_UM)
     sched = pl.concat(
         [s.stiffness_schedule.with_columns(pl.lit(c).alias("case")) for c, s in seed.items()]
     )
@@ -275,8 +275,8 @@ def _regime_tables(pts: Any, pts_l: Any, step: float, out: Path) -> list[Path]:
     files: list[Path] = []
     reg = pl.concat(
         [
-            tbg.regimes(pts).with_columns(pl.lit(100.0).alias("torque_nm")),
-            tbg.regimes(pts_l).with_columns(pl.lit(LIGHT_TORQUE_NM).alias("torque_nm")),
+            tbg.regimes(pts).with_columns(pl.lit(100.0).alias("torque_n_m")),
+            tbg.regimes(pts_l).with_columns(pl.lit(LIGHT_TORQUE_NM).alias("torque_n_m")),
         ]
     )
     files += write_table(reg, out, "regimes")
@@ -314,7 +314,7 @@ def _regime_map(seed: dict, quick: bool, periods: tuple, progress: Any, out: Pat
         ax.set_title(f"motion regime, TE {te[0]:.1f} um (constant bearing stiffness)")
         files.append(save_figure(ax, out, f"regime_map_te{te[0]:.0f}um"))
     safe = (
-        rmap.group_by("torque_nm", "te_amplitude_um")
+        rmap.group_by("torque_n_m", "te_amplitude_um")
         .agg(
             (pl.col("regime") == "period-1").mean().alias("period_1_fraction"),
             (pl.col("impact") == "no-impact").mean().alias("no_impact_fraction"),
@@ -323,7 +323,7 @@ def _regime_map(seed: dict, quick: bool, periods: tuple, progress: Any, out: Pat
             .min()
             .alias("first_chaos_rpm"),
         )
-        .sort("te_amplitude_um", "torque_nm")
+        .sort("te_amplitude_um", "torque_n_m")
     )
     files += write_table(safe, out, "regime_map_summary")
     return files

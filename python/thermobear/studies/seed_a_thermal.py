@@ -5,7 +5,7 @@ radial stiffness for the three cases (Fig. 11), and the table
 ``paper_vs_thermobear_seed_a``.
 
 Model assumptions that differ from the paper are in the table's ``note``
-column and in :mod:`thermobear.thermal` (network dimensions, aluminium
+column and in [`thermobear.thermal`][thermobear.thermal] (network dimensions, aluminium
 housing, e-drive ATF oil, f0 = 1, mu_s = 0.06; nothing tuned to the paper).
 """
 
@@ -176,7 +176,10 @@ def _deformations_and_stiffness(b: Bearing, n: int, out: Path) -> tuple:
         how="diagonal",
     )
     files += write_table(stiff, out, "seed_a_stiffness_three_cases")
-    for col, fig in (("radial_stiffness_n_per_m", "radial"), ("axial_stiffness_n_per_m", "axial")):
+    for col, fig in (
+        ("radial_stiffness_seed_n_per_m", "radial"),
+        ("axial_stiffness_seed_n_per_m", "axial"),
+    ):
         ax = plot.stiffness_cases(cases, names, column=col)
         ax.set_title(f"6208, 100 N m: {fig} stiffness (Fig. 11)")
         files.append(save_figure(ax, out, f"seed_a_{fig}_stiffness_three_cases"))
@@ -315,7 +318,7 @@ def _paper_rows_deformations(thermal: Any) -> list[dict]:
             "Fig. 10b, 100 N m",
             "grows, close to the load deformation, above the centrifugal one",
             "um",
-            f"{ur[0]:.2f} -> {ur[-1]:.2f} (load {thermal['radial_displacement_mm'][-1] * 1e3:.2f}, "
+            f"{ur[0]:.2f} -> {ur[-1]:.2f} (load {thermal['radial_displacement_um'][-1]:.2f}, "
             f"centrifugal {thermal['centrifugal_expansion_um'][-1]:.2f})",
             "magnitude grows and exceeds the centrifugal growth; sign negative (clearance opens) "
             "because the aluminium housing (23e-6 1/K) on a tight fit pulls the outer ring out "
@@ -328,7 +331,7 @@ def _paper_rows_deformations(thermal: Any) -> list[dict]:
             "Fig. 10a, 100 N m",
             "grows, negligible against the load deformation",
             "um",
-            f"{ua[0]:.2f} -> {ua[-1]:.2f} (load {thermal['axial_displacement_mm'][-1] * 1e3:.1f})",
+            f"{ua[0]:.2f} -> {ua[-1]:.2f} (load {thermal['axial_displacement_um'][-1]:.1f})",
             "under a force-controlled axial load the axial offset only shifts the ring; "
             "assumed L_s = 30 mm, L_h = 40 mm; the load value is the ISO/TS 16281 axial "
             "displacement, clearance take-up A sin(a0) included",
@@ -341,8 +344,8 @@ def _paper_rows_stiffness(speed: Any, thermal: Any, cast_iron: Any) -> list[dict
     """Paper vs thermobear: stiffness, thermal against speed-only (Fig. 11)."""
     rows: list[dict] = []
     for col, claim, lab in (
-        ("radial_stiffness_n_per_m", "thermal raises radial stiffness", "radial"),
-        ("axial_stiffness_n_per_m", "thermal lowers axial stiffness", "axial"),
+        ("radial_stiffness_seed_n_per_m", "thermal raises radial stiffness", "radial"),
+        ("axial_stiffness_seed_n_per_m", "thermal lowers axial stiffness", "axial"),
     ):
         for case, df in (("aluminium housing", thermal), ("cast-iron housing", cast_iron)):
             diff = df[col].to_numpy() - speed[col].to_numpy()

@@ -35,7 +35,7 @@ def study_seed_b_bearing(out: Path, quick: bool = False) -> list[Path]:
 
     table = pl.concat(frames, how="diagonal")
     files += write_table(table, out, "seed_b_7009c_vs_speed")
-    ax = plot.stiffness_cases(frames[:3], labels[:3], column="radial_stiffness_n_per_m")
+    ax = plot.stiffness_cases(frames[:3], labels[:3], column="radial_stiffness_seed_n_per_m")
     ax.set_title("7009C hybrid: radial stiffness vs speed and preload")
     files.append(save_figure(ax, out, "seed_b_radial_stiffness"))
     ax = plot.contact_angles(frames[0])

@@ -94,9 +94,9 @@ def _transient(sp: Any, quick: bool, out: Path) -> tuple:
     files.append(save_figure(ax, out, "seed_b_fig4_transient"))
     steady12 = sp.thermal_state(speed_rpm=12_000.0)
     settle = {}
-    for node in ("front_balls", "front_inner", "front_outer"):
-        target = float(steady12[f"{node}_c"][0])
-        v = tr[f"{node}_c"].to_numpy()
+    for node in ("front_ball", "front_inner_ring", "front_outer_ring"):
+        target = float(steady12[f"{node}_temperature_c"][0])
+        v = tr[f"{node}_temperature_c"].to_numpy()
         t = tr["time_s"].to_numpy()
         start = v[0]
         ok95 = (v - start) >= 0.95 * (target - start)
@@ -139,7 +139,7 @@ def _thermal_displacement(sp: Any, steel: Any, speeds: list, out: Path) -> tuple
         d = disp.filter(pl.col("balls") == lab)
         ax.plot(
             d["speed_rpm"].to_numpy(),
-            d["radial_thermal_displacement_um"].to_numpy(),
+            d["thermal_radial_displacement_um"].to_numpy(),
             "o-",
             label=lab,
         )
@@ -169,7 +169,7 @@ def _contact_and_stiffness(sp: Any, speeds: list, preloads: list) -> Any:
         iso.select(
             "speed_rpm",
             "preload_n",
-            pl.col("radial_stiffness_n_per_m").alias("radial_stiffness_isothermal_n_per_m"),
+            pl.col("k_xx_n_per_m").alias("k_xx_isothermal_n_per_m"),
             pl.col("inner_contact_angle_deg").alias("inner_contact_angle_isothermal_deg"),
             pl.col("outer_contact_angle_deg").alias("outer_contact_angle_isothermal_deg"),
         ),
@@ -210,13 +210,13 @@ def _contact_figures(mech: Any, preloads: list, out: Path) -> list[Path]:
     d = mech.filter(pl.col("preload_n") == 300.0).sort("speed_rpm")
     ax.plot(
         d["speed_rpm"].to_numpy(),
-        d["radial_stiffness_n_per_m"].to_numpy() / 1e6,
+        d["k_xx_n_per_m"].to_numpy() / 1e6,
         "o-",
         label="thermal",
     )
     ax.plot(
         d["speed_rpm"].to_numpy(),
-        d["radial_stiffness_isothermal_n_per_m"].to_numpy() / 1e6,
+        d["k_xx_isothermal_n_per_m"].to_numpy() / 1e6,
         "s--",
         label="no thermal",
     )
@@ -321,7 +321,7 @@ def _rows_temperatures(t18: Any) -> list[tuple]:
         "18,000 rpm, 400 N",
         64.8,
         "C",
-        _pick(t18, "front_balls_c", preload_n=400.0),
+        _pick(t18, "front_ball_temperature_c", preload_n=400.0),
         _TEMPS,
     )
     add(
@@ -329,7 +329,7 @@ def _rows_temperatures(t18: Any) -> list[tuple]:
         "18,000 rpm, 400 N",
         49.8,
         "C",
-        _pick(t18, "front_inner_c", preload_n=400.0),
+        _pick(t18, "front_inner_ring_temperature_c", preload_n=400.0),
         _TEMPS,
     )
     add(
@@ -337,10 +337,12 @@ def _rows_temperatures(t18: Any) -> list[tuple]:
         "18,000 rpm, 400 N",
         38.9,
         "C",
-        _pick(t18, "front_outer_c", preload_n=400.0),
+        _pick(t18, "front_outer_ring_temperature_c", preload_n=400.0),
         _TEMPS,
     )
-    b5, b4, b3 = (_pick(t18, "front_balls_c", preload_n=p) for p in (500.0, 400.0, 300.0))
+    b5, b4, b3 = (
+        _pick(t18, "front_ball_temperature_c", preload_n=p) for p in (500.0, 400.0, 300.0)
+    )
     add("front ball temperature", "18,000 rpm, 500 N", 74.2, "C", b5, _TEMPS)
     add(
         "ball temperature rise 400 -> 500 N",
@@ -431,10 +433,10 @@ def _rows_displacement(disp: Any, hi: float) -> list[tuple]:
     rows: list[tuple] = []
     add = _adder(rows)
     d_steel = _pick(
-        disp.filter(pl.col("balls") == "steel"), "radial_thermal_displacement_um", speed_rpm=hi
+        disp.filter(pl.col("balls") == "steel"), "thermal_radial_displacement_um", speed_rpm=hi
     )
     d_cer = _pick(
-        disp.filter(pl.col("balls") == "Si3N4"), "radial_thermal_displacement_um", speed_rpm=hi
+        disp.filter(pl.col("balls") == "Si3N4"), "thermal_radial_displacement_um", speed_rpm=hi
     )
     add(
         "radial thermal displacement, steel balls", "7009C, 18,000 rpm", 16.68, "um", d_steel, _RDEF
@@ -496,7 +498,7 @@ def _rows_stiffness_and_settling(mech: Any, settle: dict) -> list[tuple]:
     """Paper vs thermobear: largest radial stiffness, time to steady state."""
     rows: list[tuple] = []
     add = _adder(rows)
-    kmax = float(mech["radial_stiffness_n_per_m"].max())
+    kmax = float(mech["k_xx_n_per_m"].max())
     add(
         "largest radial stiffness",
         "front pair, all speeds and preloads",
@@ -505,7 +507,7 @@ def _rows_stiffness_and_settling(mech: Any, settle: dict) -> list[tuple]:
         kmax,
         "seed B prints N/mm, most likely N/m; ours is the K_xx of the front pair (two bearings)",
     )
-    t95 = settle["front_inner"][0]
+    t95 = settle["front_inner_ring"][0]
     add(
         "time to thermal steady state",
         "12,000 rpm",
@@ -513,9 +515,9 @@ def _rows_stiffness_and_settling(mech: Any, settle: dict) -> list[tuple]:
         "min",
         t95 / 60.0,
         "time for the front inner ring to reach 95 % of its rise (ball: "
-        f"{settle['front_balls'][0] / 60.0:.1f} min, outer: "
-        f"{settle['front_outer'][0] / 60.0:.1f} min; within 0.5 K: "
-        f"{settle['front_inner'][1] / 60.0:.1f} min); heat capacities from the assumed masses, "
-        "not tuned",
+        f"{settle['front_ball'][0] / 60.0:.1f} min, outer: "
+        f"{settle['front_outer_ring'][0] / 60.0:.1f} min; within 0.5 K: "
+        f"{settle['front_inner_ring'][1] / 60.0:.1f} min); heat capacities from the assumed "
+        "masses, not tuned",
     )
     return rows

@@ -1,6 +1,6 @@
 """Seed B's spindle vibration study: Campbell diagram, vibration velocity
 against speed (uncoupled, and thermally coupled through the raceway offsets
-of :class:`thermobear.Spindle`'s coupled steady state), the 12,000 rpm
+of [`thermobear.Spindle`][thermobear.Spindle]'s coupled steady state), the 12,000 rpm
 spectrum, and the paper-vs-thermobear table.
 
 Nothing here is tuned to the paper: the spindle dimensions are the
@@ -11,16 +11,20 @@ documented assumptions of ``src/rotor/presets.rs`` and
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from .. import rotor
 from ..spindle import Spindle
 
+if TYPE_CHECKING:
+    import polars
+
 __all__ = ["study_seed_b_vibration"]
 
 
-def _paper_table(ours: dict) -> "polars.DataFrame":  # noqa: F821
+def _paper_table(ours: dict) -> polars.DataFrame:
     import polars as pl
 
     rows = [
@@ -135,7 +139,7 @@ def study_seed_b_vibration(out: Path, quick: bool = False) -> list[Path]:
     ax.set_title("Nose velocity spectrum, 12,000 rpm (nonlinear ball forces)")
     files.append(save_figure(ax, out, "seed_b_spectrum_12000rpm"))
 
-    def at18(df: "pl.DataFrame") -> float:  # noqa: F821
+    def at18(df: polars.DataFrame) -> float:
         return float(df.filter(pl.col("speed_rpm") == 18_000.0)["velocity_rms_mm_s"][0])
 
     fwd = crit.filter(pl.col("whirl") == "forward")

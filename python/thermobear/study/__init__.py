@@ -11,8 +11,9 @@ the chunks finish, resumed where an earlier run stopped.
 
 Kinds of point: ``bearing`` (quasi-static solve at speed), ``thermal``
 (coupled thermal state of a bearing), ``spindle`` (coupled spindle state),
-``gear`` (motion regime at a speed); :func:`kinds_table` lists every input.
-A study can be described in TOML (:func:`load_study`, ``thermobear study``).
+``gear`` (motion regime at a speed);
+[`kinds_table`][thermobear.study.kinds_table] lists every input.
+A study can be described in TOML ([`load_study`][thermobear.load_study], ``thermobear study``).
 """
 
 from .config import load_study, parse_study

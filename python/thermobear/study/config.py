@@ -47,7 +47,7 @@ def _check_names(study_kind: Any, table: dict, where: str) -> None:
 
 
 def parse_study(text: str) -> Study:
-    """A :class:`Study` from TOML text."""
+    """A [`Study`][thermobear.Study] from TOML text."""
     from .kinds import kind_of
 
     try:
@@ -76,7 +76,7 @@ def parse_study(text: str) -> Study:
 
 
 def load_study(path_or_text: Any) -> Study:
-    """A :class:`Study` from a TOML file (a path) or TOML text."""
+    """A [`Study`][thermobear.Study] from a TOML file (a path) or TOML text."""
     text = str(path_or_text)
     if "\n" not in text and "=" not in text:
         try:

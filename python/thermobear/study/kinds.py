@@ -6,13 +6,14 @@ number of rows, a fixed schema, and ``ok``, ``error_kind``, ``error``: a
 point that fails (no convergence, thermal runaway, a setting the model
 rejects) is a row with its error and null outputs, never an exception.
 
-* ``bearing``: the quasi-static solve at speed (:meth:`Bearing.solve_many`);
+* ``bearing``: the quasi-static solve at speed
+([`Bearing.solve_many`][thermobear.Bearing.solve_many]);
 * ``thermal``: the coupled thermal state of one bearing
-  (:func:`thermobear.thermal_state`, batched);
+  ([`thermobear.thermal_state`][thermobear.thermal_state], batched);
 * ``spindle``: the coupled steady state of a spindle
-  (:meth:`Spindle.thermal_state`);
+  ([`Spindle.thermal_state`][thermobear.Spindle.thermal_state]);
 * ``gear``: the motion regime of the gear system at a speed
-  (:func:`thermobear.regime_map` of one cell).
+  ([`thermobear.regime_map`][thermobear.regime_map] of one cell).
 """
 
 from __future__ import annotations
@@ -21,7 +22,10 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from typing import Any, Callable, Optional
 
+from .._limits import available_cores, cap_threads
+from .._types import StudyKind
 from ..errors import ConfigError, ThermobearError
+from ..thermal.state import DEFAULT_SPIN_FRICTION_COEFFICIENT
 
 Runner = Callable[["Kind", Any, Optional[int]], Any]
 
@@ -46,7 +50,7 @@ class Kind:
     """A kind of point: its inputs, its outputs (name -> polars dtype name)
     and the function that computes a chunk."""
 
-    name: str
+    name: StudyKind
     doc: str
     params: tuple[Param, ...]
     outputs: tuple[tuple[str, str], ...]
@@ -175,24 +179,25 @@ def _row_map(inputs: Any, threads: Optional[int], point: Callable[[dict], dict])
             return _error_row(e)
 
     rows = inputs.to_dicts()
-    workers = max(1, min(len(rows), threads or _cpu_count()))
-    with ThreadPoolExecutor(max_workers=workers) as pool:
+    workers = max(1, min(len(rows), cap_threads(threads) or available_cores()))
+    pool = ThreadPoolExecutor(max_workers=workers)
+    try:
         out = list(pool.map(safe, rows))
+    except BaseException:
+        # Ctrl-C (or an error): drop the rows not started, wait only for the
+        # ones running (each a short native call).
+        pool.shutdown(wait=True, cancel_futures=True)
+        raise
+    pool.shutdown(wait=True)
     return pl.DataFrame(out, infer_schema_length=None)
 
 
-def _cpu_count() -> int:
-    import os
-
-    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
-
-
 _BEARING_OUTPUTS = (
-    ("axial_stiffness_n_per_m", "Float64"),
-    ("radial_stiffness_n_per_m", "Float64"),
+    ("axial_stiffness_seed_n_per_m", "Float64"),
+    ("radial_stiffness_seed_n_per_m", "Float64"),
     ("k_xx_n_per_m", "Float64"),
     ("k_zz_n_per_m", "Float64"),
-    ("k_ryry_nm_per_rad", "Float64"),
+    ("k_ryry_n_m_per_rad", "Float64"),
     ("axial_displacement_um", "Float64"),
     ("radial_displacement_um", "Float64"),
     ("tilt_rad", "Float64"),
@@ -290,7 +295,7 @@ _THERMAL_OUTPUTS = _BEARING_OUTPUTS + (
     ("load_heat_w", "Float64"),
     ("viscous_heat_w", "Float64"),
     ("spin_heat_w", "Float64"),
-    ("churning_w", "Float64"),
+    ("churning_heat_w", "Float64"),
     ("radial_thermal_offset_um", "Float64"),
     ("axial_thermal_offset_um", "Float64"),
     ("ball_growth_um", "Float64"),
@@ -332,7 +337,12 @@ THERMAL = Kind(
         # Default None: what the model takes without it (f0 = 1 or the
         # lubrication method's; no drag heat or the method's oil fraction).
         Param("lubrication_factor_f0", float, None, "Palmgren f0 [-]"),
-        Param("spin_friction", float, 0.06, "spin friction coefficient [-]"),
+        Param(
+            "spin_friction_coefficient",
+            float,
+            DEFAULT_SPIN_FRICTION_COEFFICIENT,
+            "spin friction coefficient [-]",
+        ),
         Param("oil_air_temperature_c", float, 28.0, "oil-air supply temperature [C]"),
         Param("ambient_temperature_c", float, 26.0, "ambient temperature [C]"),
         Param(
@@ -369,21 +379,21 @@ THERMAL = Kind(
 # -- spindle ----------------------------------------------------------------------
 
 _SPINDLE_NODES = (
-    "shaft_front",
+    "front_shaft",
     "rotor",
-    "shaft_rear",
+    "rear_shaft",
     "stator",
-    "front_inner",
-    "front_balls",
-    "front_outer",
-    "rear_inner",
-    "rear_balls",
-    "rear_outer",
-    "housing_front",
+    "front_inner_ring",
+    "front_ball",
+    "front_outer_ring",
+    "rear_inner_ring",
+    "rear_ball",
+    "rear_outer_ring",
+    "front_housing",
     "sleeve",
-    "housing_rear",
+    "rear_housing",
 )
-_SPINDLE_OUTPUTS = tuple((f"{n}_c", "Float64") for n in _SPINDLE_NODES) + (
+_SPINDLE_OUTPUTS = tuple((f"{n}_temperature_c", "Float64") for n in _SPINDLE_NODES) + (
     ("operating_preload_n", "Float64"),
     ("rear_operating_preload_n", "Float64"),
     ("spring_compression_um", "Float64"),
@@ -392,14 +402,14 @@ _SPINDLE_OUTPUTS = tuple((f"{n}_c", "Float64") for n in _SPINDLE_NODES) + (
     ("outer_contact_angle_deg", "Float64"),
     ("inner_load_max_n", "Float64"),
     ("outer_load_max_n", "Float64"),
-    ("radial_stiffness_n_per_m", "Float64"),
-    ("axial_stiffness_n_per_m", "Float64"),
+    ("k_xx_n_per_m", "Float64"),
+    ("k_zz_n_per_m", "Float64"),
     ("front_bearing_heat_w", "Float64"),
     ("bearing_heat_w", "Float64"),
     ("motor_losses_w", "Float64"),
     ("total_heat_w", "Float64"),
     ("axial_growth_um", "Float64"),
-    ("radial_thermal_displacement_um", "Float64"),
+    ("thermal_radial_displacement_um", "Float64"),
     ("ball_growth_um", "Float64"),
     ("iterations", "Int64"),
 )
@@ -418,7 +428,7 @@ def _run_spindle(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
             preload_kind=row["preload_kind"],
             spring_rate_n_per_um=row["spring_rate_n_per_um"],
             radial_load_n=row["radial_n"],
-            spin_friction=row["spin_friction"],
+            spin_friction_coefficient=row["spin_friction_coefficient"],
         )
         state = sp.thermal_state(row["speed_rpm"]).row(0, named=True)
         return {k: state[k] for k, _ in _SPINDLE_OUTPUTS if k in state}
@@ -451,7 +461,7 @@ SPINDLE = Kind(
             check=_one_of("preload_kind", "rigid", "spring"),
         ),
         Param("spring_rate_n_per_um", float, None, "preload spring rate [N/um]"),
-        Param("spin_friction", float, None, "spin friction coefficient [-]"),
+        Param("spin_friction_coefficient", float, None, "spin friction coefficient [-]"),
     ),
     _SPINDLE_OUTPUTS,
     _run_spindle,
@@ -473,11 +483,11 @@ def _run_gear(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
             backlash_total_um=row["backlash_total_um"],
             mesh_damping_ratio=row["mesh_damping_ratio"],
             te_amplitude_um=row["te_amplitude_um"],
-            torque_nm=row["torque_nm"],
+            torque_n_m=row["torque_n_m"],
         )
         cell = regime_map(
             system,
-            [row["torque_nm"]],
+            [row["torque_n_m"]],
             [row["speed_rpm"]],
             [1.0],
             transient_periods=row["transient_periods"],
@@ -520,18 +530,25 @@ GEAR = Kind(
         Param(
             "stiffness",
             str,
-            "constant",
-            "bearing stiffness model: 'constant' or 'speed'",
+            "speed",
+            "bearing stiffness model: 'speed' (as tb.GearSystem) or 'constant'",
             check=_one_of("stiffness", "constant", "speed"),
         ),
         Param("speed_rpm", float, 3000.0, "pinion speed [rpm]"),
-        Param("torque_nm", float, 100.0, "input torque [N m]"),
+        Param("torque_n_m", float, 100.0, "input torque [N m]"),
         Param("te_amplitude_um", float, 2.0, "transmission error amplitude [um]"),
         Param("backlash_total_um", float, 100.0, "total backlash 2b [um]"),
         Param("mesh_damping_ratio", float, 0.07, "mesh damping ratio [-]"),
         Param("transient_periods", int, 300, "mesh periods discarded"),
         Param("record_periods", int, 100, "mesh periods recorded"),
-        Param("steps_per_period", int, 128, "integration steps per mesh period"),
+        # Default None: as tb.bifurcation -- 64, or the fewest the point's
+        # speed needs; a given number is checked before the point runs.
+        Param(
+            "steps_per_period",
+            int,
+            None,
+            "RK4 steps per mesh period (null: 64, or the fewest the speed needs)",
+        ),
     ),
     _GEAR_OUTPUTS,
     _run_gear,

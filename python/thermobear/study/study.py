@@ -1,4 +1,4 @@
-"""The :class:`Study`: a grid of points of one kind, computed in chunks,
+"""The [`Study`][thermobear.Study]: a grid of points of one kind, computed in chunks,
 stored as parquet, resumed where it stopped."""
 
 from __future__ import annotations
@@ -9,7 +9,9 @@ from pathlib import Path
 from typing import Any, Callable, Mapping, Optional
 
 from .. import _native
-from ..errors import ConfigError
+from .._limits import cap_threads
+from .._types import StudyKind
+from ..errors import ConfigError, Interrupted
 from . import engine as engines
 from .grid import Grid, grid_hash
 from .kinds import kind_of
@@ -45,22 +47,32 @@ class RunReport:
             f"{self.seconds:.1f} s{stop}{where}"
         )
 
+    def summary(self) -> str:
+        """What the run did, in one line (as ``str``)."""
+        return str(self)
+
+    def __repr__(self) -> str:
+        return (
+            f"RunReport(points={self.points}, computed={self.computed}, reused={self.reused}, "
+            f"failed_points={self.failed_points})"
+        )
+
 
 class Study:
     """A design study: points of one ``kind`` (``"bearing"``, ``"thermal"``,
-    ``"spindle"``, ``"gear"``; see :func:`thermobear.study.kinds_table` for
-    each kind's inputs) over a ``grid`` (input name -> a list, array,
+    ``"spindle"``, ``"gear"``; see [`thermobear.study.kinds_table`][thermobear.study.kinds_table]
+    for each kind's inputs) over a ``grid`` (input name -> a list, array,
     ``range`` or a range ``{"start", "stop", "num"}`` /
     ``{"start", "stop", "step"}``; the Cartesian product, first dimension
     outermost) with the other inputs ``fixed`` (or at their defaults).
 
-    :meth:`run` computes it in chunks of ``chunk_size`` points and returns
+    [`run`][thermobear.Study.run] computes it in chunks of ``chunk_size`` points and returns
     one tidy polars DataFrame: ``point``, the inputs, the outputs (units in
     the names), ``ok``, ``error_kind``, ``error``."""
 
     def __init__(
         self,
-        kind: str,
+        kind: StudyKind,
         grid: Mapping[str, Any],
         fixed: Optional[Mapping[str, Any]] = None,
         *,
@@ -128,9 +140,14 @@ class Study:
         ``dask.distributed.Client`` or a scheduler address (one task per
         chunk on one worker thread; needs ``pip install "thermobear[dask]"``).
 
+        ``threads`` above the available cores is capped to them with a
+        ``ThreadsWarning``.
+
         ``progress``: a tqdm bar (None: only when stderr is a terminal or
-        in a notebook). ``on_chunk(index, frame)`` after each stored chunk.
-        Ctrl-C keeps the finished chunks; :attr:`report` says what was
+        in a notebook). ``on_chunk(index, frame)`` after each stored chunk;
+        if it returns False the run stops with ``thermobear.Interrupted``
+        (the chunks stored so far are kept). Ctrl-C keeps the finished
+        chunks; ``report`` says what was
         computed and reused (also after an interrupt). ``collect=False``
         (with ``out``) keeps no chunk in memory and returns None: read the
         results with ``polars.scan_parquet(out / "chunks" / "*.parquet")``."""
@@ -160,12 +177,16 @@ class Study:
             report.computed += 1
             report.failed_points += int(frame.height - frame["ok"].sum())
             bar.update(frame.height)
-            if on_chunk is not None:
-                on_chunk(index, frame)
+            if on_chunk is not None and on_chunk(index, frame) is False:
+                raise Interrupted(
+                    f"stopped by on_chunk (it returned False) after chunk {index}: "
+                    f"{report.computed} of {len(todo)} chunks computed"
+                )
 
+        threads = cap_threads(threads)
         try:
             self._execute(engine, todo, threads, on_done)
-        except KeyboardInterrupt:
+        except (KeyboardInterrupt, Interrupted):
             report.interrupted = True
             raise
         finally:
@@ -177,7 +198,9 @@ class Study:
         start, stop = engines.chunk_bounds(self.n_points, self.chunk_size, index)
         return stop - start
 
-    def _execute(self, engine: Any, todo: list[int], threads: Optional[int], on_done) -> None:
+    def _execute(
+        self, engine: Any, todo: list[int], threads: Optional[int], on_done: engines.OnDone
+    ) -> None:
         if engine is None or engine == "local":
             engines.run_local(self.grid, self.chunk_size, todo, threads, on_done)
             return
@@ -214,6 +237,6 @@ class Study:
         )
 
 
-def _rebuild(kind: str, dims: dict, fixed: dict, chunk_size: int) -> Study:
-    """Unpickle a :class:`Study` (through its validating constructor)."""
+def _rebuild(kind: StudyKind, dims: dict, fixed: dict, chunk_size: int) -> Study:
+    """Unpickle a [`Study`][thermobear.Study] (through its validating constructor)."""
     return Study(kind, dims, fixed, chunk_size=chunk_size)

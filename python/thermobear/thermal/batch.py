@@ -2,13 +2,20 @@
 
 from __future__ import annotations
 
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 from .. import _native
-from ..bearing.ball_bearing import Bearing, _effects_arg
-from .state import _model_kwargs
+from .._deprecation import renamed_kwargs
+from .._limits import cap_threads
+from .._types import HeatModel, Lubrication, RacewayControl
+from ..bearing.ball_bearing import Bearing, _effects_arg, register_task
+from .state import DEFAULT_SPIN_FRICTION_COEFFICIENT, _model_kwargs
+
+if TYPE_CHECKING:
+    import polars
 
 
+@renamed_kwargs(spin_friction="spin_friction_coefficient")
 def thermal_state_many(
     bearing: Bearing,
     points: Any,
@@ -16,45 +23,58 @@ def thermal_state_many(
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
     lubrication_factor_f0: Optional[float] = None,
-    spin_friction: float = 0.06,
+    spin_friction_coefficient: float = DEFAULT_SPIN_FRICTION_COEFFICIENT,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
     housing_material: Any = "aluminium",
-    raceway_control: str = "outer",
+    raceway_control: RacewayControl = "outer",
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
     churning_oil_fraction: Optional[float] = None,
-    heat_model: str = "palmgren",
-    lubrication: Optional[str] = None,
+    heat_model: HeatModel = "palmgren",
+    lubrication: Optional[Lubrication] = None,
     threads: Optional[int] = None,
     progress: Any = None,
     **heat: Any,
-) -> "polars.DataFrame":  # noqa: F821
-    """:func:`~thermobear.thermal_state` of a bearing at many operating
+) -> polars.DataFrame:
+    """[`thermal_state`][thermobear.thermal_state] of a bearing at many operating
     points in one native call (rayon threads, GIL released, Ctrl-C within
     50 ms), each point exactly as the single call computes it.
 
     ``points``: a polars DataFrame (or mapping of columns) with any of
     ``speed_rpm``, ``axial_n``, ``radial_n`` (absent: 0); other columns are
     carried through. Model options (the heat model's included) as in
-    :func:`~thermobear.thermal_state`, shared by every point; ``threads`` (default: all cores),
-    ``progress(done, total)``.
+    [`thermal_state`][thermobear.thermal_state], shared by every point; ``threads`` (default: all
+    cores), ``progress(done, total)``.
 
     Returns the input columns followed by the bearing outputs of
-    :meth:`~thermobear.Bearing.solve_many` at the converged temperatures,
+    [`solve_many`][thermobear.Bearing.solve_many] at the converged temperatures,
     ``shaft_temperature_c``, ``inner_ring_temperature_c``,
     ``ball_temperature_c``, ``outer_ring_temperature_c``,
     ``housing_temperature_c``, ``oil_temperature_c``, ``viscosity_cst``,
     ``heat_w`` (total), ``load_heat_w``, ``viscous_heat_w``, ``spin_heat_w``,
-    ``churning_w``, ``radial_thermal_offset_um``, ``axial_thermal_offset_um``,
+    ``churning_heat_w``, ``radial_thermal_offset_um``, ``axial_thermal_offset_um``,
     ``ball_growth_um``, ``centrifugal_expansion_um``, ``thermal_residual_k``,
     ``thermal_iterations``, then ``ok``, ``error_kind``, ``error``: a point
     that runs away (``ThermalRunawayError``) or does not converge is a row
-    with its error and null outputs; nothing is raised for it."""
-    from ..bearing.batch import column_array, join_inputs, operating_frame, result_frame
+    with its error and null outputs; nothing is raised for it.
+
+    The same as the method ``thermobear.Bearing.thermal_state_many``.
+    Any object with a ``_thermal_state_many(points, **options)`` method (a
+    [`Spindle`][thermobear.Spindle]: ``thermobear.Spindle.thermal_state_many``)
+    is dispatched to it with ``points``, the options that were given and
+    the remaining keyword arguments."""
+    from ..bearing.batch import join_inputs, operating_frame, result_frame
     from ..errors import ConfigError
 
+    if hasattr(bearing, "_thermal_state_many") and not isinstance(bearing, Bearing):
+        given = {"effects": effects, "lubrication": lubrication,
+                 "heat_model": None if heat_model == "palmgren" else heat_model,
+                 "lubrication_factor_f0": lubrication_factor_f0,
+                 "churning_oil_fraction": churning_oil_fraction, "progress": progress}  # fmt: skip
+        given = {k: v for k, v in given.items() if v is not None}
+        return bearing._thermal_state_many(points, **given, **heat)
     if not isinstance(bearing, Bearing):
         raise ConfigError(f"invalid bearing = {bearing!r}: give a thermobear.Bearing")
     names = ("speed_rpm", "axial_n", "radial_n")
@@ -62,7 +82,7 @@ def thermal_state_many(
     options = _model_kwargs(
         lubricant,
         lubrication_factor_f0,
-        spin_friction,
+        spin_friction_coefficient,
         oil_air_temperature_c,
         ambient_temperature_c,
         housing_material,
@@ -77,10 +97,25 @@ def thermal_state_many(
     )
     raw = _native.thermal_state_many(
         bearing._b,
-        *(column_array(frame, c) for c in names),
+        *_speed_and_loads(frame),
         _effects_arg(effects),
         options,
-        threads=None if threads is None else int(threads),
+        threads=cap_threads(threads),
         progress=progress,
     )
     return join_inputs(frame, result_frame(raw))
+
+
+register_task("thermal_state_many", thermal_state_many)
+
+
+def _speed_and_loads(frame: Any) -> tuple[Any, Any, Any]:
+    """The float64 columns ``speed_rpm``, ``axial_n``, ``radial_n`` of an
+    operating frame, in the order the native call takes them."""
+    from ..bearing.batch import column_array
+
+    return (
+        column_array(frame, "speed_rpm"),
+        column_array(frame, "axial_n"),
+        column_array(frame, "radial_n"),
+    )

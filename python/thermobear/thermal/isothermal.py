@@ -1,7 +1,7 @@
 """Bearing heat at a fixed oil temperature: the friction model alone.
 
-:func:`isothermal_heat` evaluates the heat model of
-:func:`~thermobear.thermal_state` (Palmgren or the SKF-style four-term
+[`isothermal_heat`][thermobear.isothermal_heat] evaluates the heat model of
+[`thermal_state`][thermobear.thermal_state] (Palmgren or the SKF-style four-term
 moment, ball drag, spin) on the isothermal bearing state, with the oil --
 and so its viscosity and density -- held at ``oil_temperature_c``, and no
 thermal network. For conditions that fix the bearing temperature, such as
@@ -14,14 +14,22 @@ from dataclasses import dataclass
 from typing import Any, Optional, Sequence
 
 from .. import _native
+from .._deprecation import renamed_kwargs
+from .._types import HeatModel, Lubrication, RacewayControl
 from ..bearing.ball_bearing import _effects_arg
-from .state import _check_bearing_call, _HeatRows, _model_kwargs
+from .state import (
+    DEFAULT_SPIN_FRICTION_COEFFICIENT,
+    _check_bearing_call,
+    _heat_line,
+    _HeatRows,
+    _model_kwargs,
+)
 
 
 @dataclass(frozen=True)
 class IsothermalHeat(_HeatRows):
     """Heat of one bearing at one operating point and oil temperature
-    (``heat``, ``total_heat_w``, ``churning_w``, ``viscosity_cst``,
+    (``heat``, ``total_heat_w``, ``churning_heat_w``, ``viscosity_cst``,
     ``oil_temperature_c``, ``solution``: the isothermal bearing state); SI
     inside ``raw``."""
 
@@ -31,7 +39,22 @@ class IsothermalHeat(_HeatRows):
             f"nu={self.viscosity_cst:.2f} mm^2/s at {self.oil_temperature_c:.1f} C)"
         )
 
+    def summary(self) -> str:
+        """The heat in a few lines: total, by mechanism, the oil and the
+        bearing state it was evaluated on."""
+        sol = self.solution
+        return "\n".join(
+            [
+                f"isothermal heat ({self.raw['heat_model']}): {self.total_heat_w:.4g} W at "
+                f"{sol.speed_rpm:g} rpm",
+                _heat_line(self),
+                f"  oil at {self.oil_temperature_c:.1f} C: {self.viscosity_cst:.3g} mm^2/s",
+                f"  bearing: k_xx {sol.k_xx_n_per_m:.4g} N/m, k_zz {sol.k_zz_n_per_m:.4g} N/m",
+            ]
+        )
 
+
+@renamed_kwargs(spin_friction="spin_friction_coefficient")
 def isothermal_heat(
     bearing: Any,
     speed_rpm: float,
@@ -42,28 +65,28 @@ def isothermal_heat(
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
     lubrication_factor_f0: Optional[float] = None,
-    spin_friction: float = 0.06,
-    raceway_control: str = "outer",
+    spin_friction_coefficient: float = DEFAULT_SPIN_FRICTION_COEFFICIENT,
+    raceway_control: RacewayControl = "outer",
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     churning_oil_fraction: Optional[float] = None,
-    heat_model: str = "palmgren",
-    lubrication: Optional[str] = None,
+    heat_model: HeatModel = "palmgren",
+    lubrication: Optional[Lubrication] = None,
     **heat: Any,
 ) -> IsothermalHeat:
     """Heat of ``bearing`` at ``speed_rpm`` under ``axial_n`` and
     ``radial_n`` [N] with the ``lubricant`` at ``oil_temperature_c`` [C]
     (its viscosity and density taken there), no thermal expansion and no
     thermal network: the heat model options of
-    :func:`~thermobear.thermal_state` (``heat_model``, ``lubrication``,
-    ``lubrication_factor_f0``, ``spin_friction``, ``churning_oil_fraction``,
-    ``extra_heat_w`` and the SKF keywords of :data:`HEAT_MODEL_OPTIONS`).
+    [`thermal_state`][thermobear.thermal_state] (``heat_model``, ``lubrication``,
+    ``lubrication_factor_f0``, ``spin_friction_coefficient``, ``churning_oil_fraction``,
+    ``extra_heat_w`` and the SKF keywords of ``HEAT_MODEL_OPTIONS``).
     A temperature outside the lubricant's data raises ``ConfigError``
     naming ``oil_temperature_c``."""
     _check_bearing_call(bearing, {})  # unknown keywords: _model_kwargs names them
     # the network's boundary temperatures are not used here: neutral 40 C
     neutral = (40.0, 40.0, "aluminium")
-    args = (lubricant, lubrication_factor_f0, spin_friction, *neutral, raceway_control,
+    args = (lubricant, lubrication_factor_f0, spin_friction_coefficient, *neutral, raceway_control,
             misalignment_rad, extra_heat_w, 1.0, churning_oil_fraction)  # fmt: skip
     options = _model_kwargs(*args, heat_model=heat_model, lubrication=lubrication, **heat)
     raw = _native.isothermal_heat(

@@ -1,11 +1,11 @@
 """Bearing heat, the thermal network and the coupled thermo-mechanical state.
 
-:func:`thermal_state` solves the fixed point heat -> temperatures ->
+[`thermal_state`][thermobear.thermal_state] solves the fixed point heat -> temperatures ->
 thermal expansion -> raceway geometry -> contact loads -> heat for one
 bearing in the seed A thermal network (Fig. 7). Objects with a
 ``_thermal_state(**kwargs)`` method (e.g. a spindle) are dispatched to it.
 
-Effects (see :func:`thermobear.effects`): ``thermal_expansion_shaft``,
+Effects (see [`thermobear.effects`][thermobear.effects]): ``thermal_expansion_shaft``,
 ``_inner_ring``, ``_outer_ring``, ``_balls``, ``_housing``,
 ``temperature_dependent_viscosity`` and ``spin_friction`` switch the
 thermal terms; ``centrifugal_force``, ``gyroscopic_moment`` and
@@ -15,14 +15,20 @@ thermal terms; ``centrifugal_force``, ``gyroscopic_moment`` and
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 import numpy as np
 
 from .. import _native
-from ..bearing.ball_bearing import Bearing, BearingSolution, _effects_arg
+from .._deprecation import renamed_kwargs, warn_renamed
+from .._names import BEARING_NODES, BEARING_SYMBOLS
+from .._types import HeatModel, Lubrication, RacewayControl
+from ..bearing.ball_bearing import Bearing, BearingSolution, _effects_arg, register_task
 from ..bearing.material import _native_material
 from ..errors import ConfigError
+
+if TYPE_CHECKING:
+    import polars
 
 #: Effects that make the coupled model differ from the isothermal one.
 THERMAL_EFFECTS = (
@@ -36,13 +42,13 @@ THERMAL_EFFECTS = (
 
 @dataclass(frozen=True)
 class _HeatRows:
-    """What every heat result shows (:class:`ThermalState`,
-    :class:`~thermobear.IsothermalHeat`); SI inside ``raw``."""
+    """What every heat result shows ([`ThermalState`][thermobear.ThermalState],
+    [`IsothermalHeat`][thermobear.IsothermalHeat]); SI inside ``raw``."""
 
-    raw: dict
+    raw: dict[str, Any]
 
     @property
-    def heat(self) -> "polars.DataFrame":  # noqa: F821
+    def heat(self) -> polars.DataFrame:
         """Heat by mechanism: ``source`` (Palmgren: load, viscous,
         inner_spin, outer_spin, extra, churning; SKF: rolling, sliding,
         seal, extra, churning), ``heat_w``."""
@@ -58,10 +64,16 @@ class _HeatRows:
         return float(self.raw["total_heat_w"])
 
     @property
-    def churning_w(self) -> float:
+    def churning_heat_w(self) -> float:
         """Ball drag ("churning") heat in the oil-air mixture [W] (0 unless
         ``churning_oil_fraction`` > 0)."""
         return float(self.raw["churning_w"])
+
+    @property
+    def churning_w(self) -> float:
+        """Deprecated: ``churning_heat_w``."""
+        warn_renamed("churning_w", "churning_heat_w")
+        return self.churning_heat_w
 
     @property
     def solution(self) -> BearingSolution:
@@ -84,26 +96,38 @@ class ThermalState(_HeatRows):
     """Coupled steady state of one bearing; SI inside ``raw``."""
 
     @property
-    def temperatures(self) -> "polars.DataFrame":  # noqa: F821
-        """Node temperatures: ``node``, ``temperature_c`` (boundaries included)."""
+    def temperatures(self) -> polars.DataFrame:
+        """Node temperatures (boundaries included): ``node`` (the long name,
+        e.g. ``"outer_ring"``), ``symbol`` (the physics docs', e.g. ``"To"``),
+        ``temperature_c``."""
         import polars as pl
 
+        symbols = [str(s) for s in self.raw["node"]]
         return pl.DataFrame(
-            {"node": list(self.raw["node"]), "temperature_c": np.asarray(self.raw["temperature_c"])}
+            {
+                "node": [BEARING_SYMBOLS.get(s, s) for s in symbols],
+                "symbol": symbols,
+                "temperature_c": np.asarray(self.raw["temperature_c"], dtype=float),
+            }
         )
 
     def temperature_c(self, node: str) -> float:
-        """Temperature of one node (``Ts``, ``Tci``, ``Ti``, ``Tb``, ``To``,
-        ``Tco``, ``Th``, ``Tog``, ``Ta``)."""
+        """Temperature of one node [C], by its name (``shaft``,
+        ``inner_contact``, ``inner_ring``, ``ball``, ``outer_ring``,
+        ``outer_contact``, ``housing``, ``oil_air``, ``ambient``) or its
+        symbol (``Ts``, ``Tci``, ``Ti``, ``Tb``, ``To``, ``Tco``, ``Th``,
+        ``Tog``, ``Ta``)."""
         from ..errors import ConfigError
 
-        names = list(self.raw["node"])
-        if node not in names:
-            raise ConfigError(f"invalid node = {node!r}: known: {', '.join(names)}")
-        return float(np.asarray(self.raw["temperature_c"])[names.index(node)])
+        symbols = [str(s) for s in self.raw["node"]]
+        symbol = BEARING_NODES.get(node, node)
+        if symbol not in symbols:
+            known = [BEARING_SYMBOLS.get(s, s) for s in symbols]
+            raise ConfigError(f"invalid node = {node!r}: known: {', '.join(known)}")
+        return float(np.asarray(self.raw["temperature_c"])[symbols.index(symbol)])
 
     @property
-    def heat_split(self) -> "polars.DataFrame":  # noqa: F821
+    def heat_split(self) -> polars.DataFrame:
         """Heat by part (Burton-Staph, A-27): ``part``, ``heat_w``."""
         import polars as pl
 
@@ -112,7 +136,7 @@ class ThermalState(_HeatRows):
         )
 
     @property
-    def boundary_flows(self) -> "polars.DataFrame":  # noqa: F821
+    def boundary_flows(self) -> polars.DataFrame:
         """Heat leaving through each fixed-temperature node: ``boundary``, ``heat_w``."""
         import polars as pl
 
@@ -147,13 +171,41 @@ class ThermalState(_HeatRows):
             f"To={t['To']:.1f} C, iterations={self.iterations})"
         )
 
+    def summary(self) -> str:
+        """The steady state in a few lines: each node's temperature, the
+        heat by mechanism, the bearing state and the convergence."""
+        from .._names import BEARING_SYMBOLS
+
+        temps = np.asarray(self.raw["temperature_c"])
+        lines = [f"thermal steady state: heat {self.total_heat_w:.4g} W"]
+        for sym, t in zip(self.raw["node"], temps, strict=False):
+            name = BEARING_SYMBOLS.get(str(sym), str(sym))
+            lines.append(f"  {name + '_temperature_c':30s} {float(t):8.2f}  ({sym})")
+        lines.append(_heat_line(self))
+        sol = self.solution
+        lines.append(
+            f"  bearing: k_xx {sol.k_xx_n_per_m:.4g} N/m, k_zz {sol.k_zz_n_per_m:.4g} N/m, "
+            f"oil {self.oil_temperature_c:.1f} C, {self.viscosity_cst:.3g} mm^2/s"
+        )
+        lines.append(f"  converged in {self.iterations} iterations, residual {self.residual:.3g} K")
+        return "\n".join(lines)
+
+
+def _heat_line(result: _HeatRows) -> str:
+    """The heat by mechanism of a heat result as one line of a summary."""
+    parts = [
+        f"{src} {float(w):.3g} W"
+        for src, w in zip(result.raw["source"], np.asarray(result.raw["heat_w"]), strict=False)
+    ]
+    return "  heat: " + ", ".join(parts)
+
 
 #: Keyword options of the heat model (docs/concepts/physics.md §9) and
 #: their defaults: ``heat_model`` "palmgren" (the seeds') or "skf" (four-term
 #: SKF-style moment); ``lubrication`` None (the seeds' oil-air with f0 = 1
 #: and no ball drag) or "grease", "oil-air", "oil-mist", "jet", "oil-bath"
 #: (its defaults then fill ``lubrication_factor_f0`` and
-#: ``churning_oil_fraction`` when not given; :func:`lubrication_defaults`);
+#: ``churning_oil_fraction`` when not given; ``lubrication_defaults``);
 #: SKF model: ``skf_series`` (SKF General Catalogue 6000, 2006, tables 3a
 #: and 3: deep-groove "60", "62", "63", "64" (also "630", "622", "623");
 #: "angular-single-row" for every single-row angular-contact series, also
@@ -161,15 +213,35 @@ class ThermalState(_HeatRows):
 #: angular-contact), ``sliding_friction_ehl`` (mu_EHL; None:
 #: 0.1 for a transmission fluid such as "e-drive ATF", else 0.05),
 #: ``replenishment_krs`` (None: from the lubrication method),
-#: ``seal_moment_nmm`` (N mm, 0 = open bearing).
+#: ``seal_moment_n_m`` (N m, 0 = open bearing; the older ``seal_moment_nmm``
+#: in N mm is deprecated and converted).
 HEAT_MODEL_OPTIONS = {
     "heat_model": "palmgren",
     "lubrication": None,
     "skf_series": None,
     "sliding_friction_ehl": None,
     "replenishment_krs": None,
-    "seal_moment_nmm": 0.0,
+    "seal_moment_n_m": 0.0,
 }
+
+#: Spin friction coefficient mu_s of the spin moment (3/8) mu_s Q a E: one
+#: default for a single bearing and a spindle. Neither seed gives a value;
+#: EHL traction at the spin-dominated sliding of a loaded ball contact is
+#: 0.03-0.07 for mineral and transmission oils, and we take the middle.
+DEFAULT_SPIN_FRICTION_COEFFICIENT = 0.05
+
+
+def seal_moment_option(heat: dict[str, Any]) -> dict[str, Any]:
+    """``heat`` with an older ``seal_moment_nmm`` (N mm) as ``seal_moment_n_m``."""
+    if "seal_moment_nmm" not in heat:
+        return heat
+    heat = dict(heat)
+    old = heat.pop("seal_moment_nmm")
+    if heat.get("seal_moment_n_m") is not None:
+        raise TypeError("got both `seal_moment_nmm` (deprecated) and `seal_moment_n_m`")
+    warn_renamed("seal_moment_nmm", "seal_moment_n_m", stacklevel=4, what="value in N m")
+    heat["seal_moment_n_m"] = None if old is None else float(old) / 1000.0
+    return heat
 
 
 def _opt_float(v: Any) -> Optional[float]:
@@ -179,7 +251,7 @@ def _opt_float(v: Any) -> Optional[float]:
 def _model_kwargs(
     lubricant: str,
     lubrication_factor_f0: Optional[float],
-    spin_friction: float,
+    spin_friction_coefficient: float,
     oil_air_temperature_c: float,
     ambient_temperature_c: float,
     housing_material: Any,
@@ -189,7 +261,8 @@ def _model_kwargs(
     housing_conductance_scale: float = 1.0,
     churning_oil_fraction: Optional[float] = None,
     **heat: Any,
-) -> dict:
+) -> dict[str, Any]:
+    heat = seal_moment_option(heat)
     for k in heat:
         if k not in HEAT_MODEL_OPTIONS:
             raise ConfigError(f"invalid argument = {k!r}: not a thermal or heat-model option")
@@ -197,7 +270,7 @@ def _model_kwargs(
     return {
         "lubricant": str(lubricant),
         "lubrication_factor_f0": _opt_float(lubrication_factor_f0),
-        "spin_friction": float(spin_friction),
+        "spin_friction": float(spin_friction_coefficient),
         "oil_air_temperature_c": float(oil_air_temperature_c),
         "ambient_temperature_c": float(ambient_temperature_c),
         "housing_material": _native_material(housing_material),
@@ -211,11 +284,13 @@ def _model_kwargs(
         "skf_series": None if h["skf_series"] is None else str(h["skf_series"]),
         "sliding_friction_ehl": _opt_float(h["sliding_friction_ehl"]),
         "replenishment_krs": _opt_float(h["replenishment_krs"]),
-        "seal_moment_nmm": float(h["seal_moment_nmm"]),
+        "seal_moment_n_m": float(h["seal_moment_n_m"]),
     }
 
 
-def lubrication_defaults(lubrication: str, bearing_type: str = "angular_contact") -> dict:
+def lubrication_defaults(
+    lubrication: Lubrication, bearing_type: str = "angular_contact"
+) -> dict[str, Any]:
     """What a lubrication method sets (docs/concepts/physics.md §9) for a
     ``bearing_type`` ("deep_groove" or "angular_contact"): the Palmgren
     factor ``lubrication_factor_f0`` and its ``f0_bounds`` (Harris &
@@ -225,6 +300,7 @@ def lubrication_defaults(lubrication: str, bearing_type: str = "angular_contact"
     return dict(_native.lubrication_defaults(str(lubrication), str(bearing_type).replace("-", "_")))
 
 
+@renamed_kwargs(spin_friction="spin_friction_coefficient")
 def thermal_state(
     bearing: Any,
     speed_rpm: float,
@@ -234,28 +310,29 @@ def thermal_state(
     effects: Optional[Sequence[str]] = None,
     lubricant: str = "e-drive ATF",
     lubrication_factor_f0: Optional[float] = None,
-    spin_friction: float = 0.06,
+    spin_friction_coefficient: Optional[float] = None,
     oil_air_temperature_c: float = 28.0,
     ambient_temperature_c: float = 26.0,
     housing_material: Any = "aluminium",
-    raceway_control: str = "outer",
+    raceway_control: RacewayControl = "outer",
     misalignment_rad: Optional[float] = 0.0,
     extra_heat_w: float = 0.0,
     housing_conductance_scale: float = 1.0,
     churning_oil_fraction: Optional[float] = None,
-    heat_model: str = "palmgren",
-    lubrication: Optional[str] = None,
+    heat_model: HeatModel = "palmgren",
+    lubrication: Optional[Lubrication] = None,
     **kwargs: Any,
 ) -> Any:
     """Coupled thermal steady state at ``speed_rpm`` under ``axial_n``
     (preload included) and ``radial_n``.
 
-    For a :class:`~thermobear.Bearing`: the seed A network (oil-air
+    For a [`Bearing`][thermobear.Bearing]: the seed A network (oil-air
     ``oil_air_temperature_c``, ambient ``ambient_temperature_c``, housing
     of ``housing_material``, ``lubricant`` preset: "ISO VG 32", "ISO VG 68",
     "e-drive ATF"), Palmgren friction with ``lubrication_factor_f0`` (None:
-    1, or the ``lubrication`` method's) and spin friction coefficient
-    ``spin_friction``. Calibration inputs:
+    1, or the ``lubrication`` method's) and the spin friction coefficient
+    ``spin_friction_coefficient`` (None: ``DEFAULT_SPIN_FRICTION_COEFFICIENT``,
+    0.05, the same default as a spindle's). Calibration inputs:
     ``extra_heat_w`` (W, >= 0; heat at the bearing beyond the modelled
     friction, e.g. from a magnetic pull load, split like rolling heat
     1/4 : 1/2 : 1/4 to inner ring, balls, outer ring) and
@@ -265,17 +342,17 @@ def thermal_state(
     0..1, default 0 = off; adds the ball drag heat
     Z (pi/64) C_D X rho_oil D^2 dm^3 omega_c^3, C_D = 0.47, at the solved
     cage speed omega_c, which grows like speed^3; split like rolling heat;
-    reported as ``churning_w`` and the ``churning`` row of
-    :attr:`ThermalState.heat`). ``heat_model`` ("palmgren" or "skf": heat
+    reported as ``churning_heat_w`` and the ``churning`` row of
+    ``ThermalState.heat``). ``heat_model`` ("palmgren" or "skf": heat
     rows rolling, sliding, seal, extra, churning), ``lubrication`` (sets the
-    defaults of f0 and X) and the SKF keywords: :data:`HEAT_MODEL_OPTIONS`.
+    defaults of f0 and X) and the SKF keywords: ``HEAT_MODEL_OPTIONS``.
     The defaults reproduce the baseline. Returns a
-    :class:`ThermalState`. Raises ``ThermalRunawayError`` when a node passes
+    [`ThermalState`][thermobear.ThermalState]. Raises ``ThermalRunawayError`` when a node passes
     the lubricant's highest temperature or heat, temperatures and contact
     loads grow together, ``ConvergenceError`` when the fixed point stalls.
 
     Any object with a ``_thermal_state(**kwargs)`` method (a
-    :class:`~thermobear.Spindle`) is dispatched to it with ``speed_rpm``, the
+    [`Spindle`][thermobear.Spindle]) is dispatched to it with ``speed_rpm``, the
     loads and ``effects`` that were given, and the remaining keyword
     arguments (for a spindle: ``preload_n``, ``preload_kind``)."""
     if hasattr(bearing, "_thermal_state") and not isinstance(bearing, Bearing):
@@ -283,11 +360,14 @@ def thermal_state(
                  "lubrication": lubrication,
                  "heat_model": None if heat_model == "palmgren" else heat_model,
                  "lubrication_factor_f0": lubrication_factor_f0,
+                 "spin_friction_coefficient": spin_friction_coefficient,
                  "churning_oil_fraction": churning_oil_fraction}  # fmt: skip
         return _dispatch(bearing, speed_rpm, given, kwargs)
     heat = {k: kwargs.pop(k) for k in list(kwargs) if k in HEAT_MODEL_OPTIONS}
     _check_bearing_call(bearing, kwargs)
-    args = (lubricant, lubrication_factor_f0, spin_friction, oil_air_temperature_c,
+    if spin_friction_coefficient is None:
+        spin_friction_coefficient = DEFAULT_SPIN_FRICTION_COEFFICIENT
+    args = (lubricant, lubrication_factor_f0, spin_friction_coefficient, oil_air_temperature_c,
             ambient_temperature_c, housing_material, raceway_control, misalignment_rad,
             extra_heat_w, housing_conductance_scale, churning_oil_fraction)  # fmt: skip
     options = _model_kwargs(*args, heat_model=heat_model, lubrication=lubrication, **heat)
@@ -301,14 +381,14 @@ def thermal_state(
     return ThermalState(raw)
 
 
-def _dispatch(machine: Any, speed_rpm: float, given: dict, kwargs: dict) -> Any:
+def _dispatch(machine: Any, speed_rpm: float, given: dict[str, Any], kwargs: dict[str, Any]) -> Any:
     """``machine._thermal_state`` with the arguments that were given."""
     given = {k: v for k, v in given.items() if v is not None}
     return machine._thermal_state(speed_rpm=speed_rpm, **given, **kwargs)
 
 
-def _check_bearing_call(bearing: Any, kwargs: dict) -> None:
-    """A :class:`~thermobear.Bearing` and no option beyond the bearing's."""
+def _check_bearing_call(bearing: Any, kwargs: dict[str, Any]) -> None:
+    """A [`Bearing`][thermobear.Bearing] and no option beyond the bearing's."""
     from ..errors import ConfigError
 
     if kwargs:
@@ -317,3 +397,6 @@ def _check_bearing_call(bearing: Any, kwargs: dict) -> None:
         )
     if not isinstance(bearing, Bearing):
         raise ConfigError(f"invalid bearing = {bearing!r}: give a thermobear.Bearing")
+
+
+register_task("thermal_state", thermal_state)

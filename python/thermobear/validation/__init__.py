@@ -1,25 +1,26 @@
-"""Validation against published data (issue 12 item 8): each shipped set
+"""Validation against published data: each shipped set
 (``thermobear/validation/data/*.toml``: source, geometry, conditions,
 points with their sigma) is modelled with thermobear's models, diagnosed
-with :func:`thermobear.diagnose`, one or more inputs calibrated on part of
+with [`thermobear.diagnose`][thermobear.diagnose], one or more inputs calibrated on part of
 the points and the error reported on the points held out.
 
 * ``seed_b_spindle`` -- seed B's measured outer-ring temperatures and
   vibration, its own model's axial growth and compensation preload
-  (:mod:`.spindle`);
+  (``thermobear.validation.spindle``);
 * ``seed_b_vibration`` -- seed B's measured 18.92 mm/s: unbalance, runout
-  or thermal displacement? (:mod:`.vibration`, issue 12 item 9);
+  or thermal displacement? (``thermobear.validation.vibration``);
 * ``fag_b70c_rigidity`` -- FAG catalogue axial rigidity and lift-off force
-  of spindle-bearing pairs (:mod:`.catalogue`);
+  of spindle-bearing pairs (``thermobear.validation.catalogue``);
 * ``ntn_ultage_rigidity`` -- NTN catalogue radial and axial rigidity of 95
   spindle-bearing pairs of two series and two contact angles
-  (:mod:`.catalogue`);
+  (``thermobear.validation.catalogue``);
 * ``skf_reference_speed_62`` -- SKF catalogue reference speeds of 27
   deep-groove bearings as a heat balance under the ISO 15312 reference
   conditions: which heat model reproduces the published friction heat?
-  (:mod:`.reference_speed`).
+  (``thermobear.validation.reference_speed``).
 
-:func:`validate` runs them and writes the report (:mod:`.report`).
+[`validate`][thermobear.validate] runs them and writes the report
+(``thermobear.validation.report``).
 """
 
 from __future__ import annotations
@@ -34,7 +35,7 @@ __all__ = ["SetResult", "load_set", "run_set", "set_names", "validate"]
 
 
 def run_set(name: str) -> SetResult:
-    """Validate one shipped set by name (see :func:`set_names`)."""
+    """Validate one shipped set by name (see [`set_names`][thermobear.validation.set_names])."""
     from .catalogue import run_catalogue
     from .reference_speed import run_reference_speed
     from .spindle import run_spindle
@@ -53,7 +54,7 @@ def run_set(name: str) -> SetResult:
 def validate(sets: Optional[Sequence[str]] = None, out: Optional[Path] = None) -> list[SetResult]:
     """Run the named validation sets (default: all shipped ones) and, with
     ``out``, write ``validation.md`` and a figure per set there. Each
-    :class:`SetResult` carries baseline error, verdict, calibrated
+    [`SetResult`][thermobear.validation.SetResult] carries baseline error, verdict, calibrated
     parameters, held-out error after calibration and, when a set does not
     pass, what is missing."""
     names = list(set_names() if not sets else sets)

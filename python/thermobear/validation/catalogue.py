@@ -23,6 +23,7 @@ L, M, H)."""
 from __future__ import annotations
 
 import time
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -30,10 +31,13 @@ from ..bearing import Bearing
 from ..errors import ConfigError
 from .result import SetResult
 
+if TYPE_CHECKING:
+    import polars
+
 _INCH_MM = 25.4
 _CLASSES = ("L", "M", "H")
 _QUANTITIES = ("pair_axial_rigidity_n_per_um", "lift_off_force_n")
-#: Every pair quantity :func:`pair_quantities` knows.
+#: Every pair quantity ``pair_quantities`` knows.
 QUANTITIES = ("pair_axial_rigidity_n_per_um", "pair_radial_rigidity_n_per_um", "lift_off_force_n")
 
 
@@ -83,7 +87,7 @@ def pair_quantities(
         "pair_radial_rigidity_n_per_um": 2.0 * float(k[0, 0]) * 1e-6,
     }
     if "lift_off_force_n" in quantities:
-        out["lift_off_force_n"] = _lift_off_force(b, preload_n, sol.axial_displacement_mm)
+        out["lift_off_force_n"] = _lift_off_force(b, preload_n, sol.axial_displacement_um / 1000.0)
     return {q: out[q] for q in quantities}
 
 
@@ -97,7 +101,7 @@ def _lift_off_force(b: Bearing, preload_n: float, axial_mm: float) -> float:
     d0 = axial_mm - s0
 
     def gap(f: float) -> float:
-        return b.solve(axial_n=f).axial_displacement_mm - s0 - 2.0 * d0
+        return b.solve(axial_n=f).axial_displacement_um / 1000.0 - s0 - 2.0 * d0
 
     return float(brentq(gap, preload_n, 20.0 * preload_n, xtol=1e-4 * preload_n))
 
@@ -108,7 +112,7 @@ def set_quantities(data: dict) -> tuple:
     return tuple(data.get("quantities", _QUANTITIES))
 
 
-def catalogue_points(data: dict) -> "polars.DataFrame":  # noqa: F821
+def catalogue_points(data: dict) -> polars.DataFrame:
     """The catalogue set's points: one row per bearing, preload class and
     quantity (``bearing``, ``preload_class``, ``preload_n``, ``quantity``,
     ``value``, ``sigma`` = the set's relative sigma x value, ``label``)."""
@@ -135,7 +139,7 @@ def catalogue_points(data: dict) -> "polars.DataFrame":  # noqa: F821
     return pl.DataFrame(rows)
 
 
-def _predict(data: dict, pts: "polars.DataFrame", fi: float) -> np.ndarray:  # noqa: F821
+def _predict(data: dict, pts: polars.DataFrame, fi: float) -> np.ndarray:
     """The model value of every point with conformity ``fi``."""
     rows = {r["name"]: r for r in data["bearings"]}
     cache: dict = {}
@@ -149,7 +153,7 @@ def _predict(data: dict, pts: "polars.DataFrame", fi: float) -> np.ndarray:  # n
     return out
 
 
-def _calibrate(data: dict, pts: "polars.DataFrame", used: np.ndarray) -> float:  # noqa: F821
+def _calibrate(data: dict, pts: polars.DataFrame, used: np.ndarray) -> float:
     """The conformity minimising chi^2 on the calibration points (bounded)."""
     from scipy.optimize import minimize_scalar
 
@@ -208,8 +212,8 @@ def run_catalogue(data: dict) -> SetResult:
     return res
 
 
-def _catalogue_verdict(frame: "polars.DataFrame") -> str:  # noqa: F821
-    z = np.abs((frame["model_before"] - frame["value"]) / frame["sigma"]).to_numpy()
+def _catalogue_verdict(frame: polars.DataFrame) -> str:
+    z = ((frame["model_before"] - frame["value"]) / frame["sigma"]).abs().to_numpy()
     worst = int(np.argmax(z))
     return (
         f"baseline within {z.max():.2f} sigma of the catalogue (worst: {frame['label'][worst]}); "
@@ -221,7 +225,7 @@ def _catalogue_verdict(frame: "polars.DataFrame") -> str:  # noqa: F821
     )
 
 
-def _catalogue_missing(frame: "polars.DataFrame") -> str:  # noqa: F821
+def _catalogue_missing(frame: polars.DataFrame) -> str:
     """The plain statement of a catalogue set that does not pass: which
     held-out points lie beyond 2 sigma, by how much and in which direction."""
     held = frame.filter(frame["heldout"])

@@ -4,7 +4,7 @@ leaves per quantity (all points, held-out ones included)."""
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -13,8 +13,11 @@ from ..diagnosis.candidates import candidate_pool
 from ..diagnosis.measurements import load_measurements
 from ..diagnosis.setting import _predict, _Setting
 
+if TYPE_CHECKING:
+    import polars
 
-def closure_table(model: Any, measured: Any, d: Diagnosis) -> "polars.DataFrame":  # noqa: F821
+
+def closure_table(model: Any, measured: Any, d: Diagnosis) -> polars.DataFrame:
     """Rows ``candidate, value, quantity, max_abs_sigma`` for the baseline
     (candidate ``"baseline"``) and each candidate of the first screening
     round applied alone at its calibrated value; ``closes``: max <= 2."""
@@ -23,7 +26,9 @@ def closure_table(model: Any, measured: Any, d: Diagnosis) -> "polars.DataFrame"
     df = load_measurements(measured, model.quantities)
     q = df["quantity"].to_numpy()
     y, s = df["value"].to_numpy(), df["sigma"].to_numpy()
-    cond = df.select([c for c in ("speed_rpm", "axial_n", "radial_n") if c in df.columns])
+    # a spindle's measurements keep their preload as ``preload_n``
+    names = ("speed_rpm", "axial_n", "preload_n", "radial_n")
+    cond = df.select([c for c in names if c in df.columns])
     pool = {c.name: c for c in candidate_pool(model, q, None)}
     rows = _rows("baseline", float("nan"), _predict(model, _Setting(), cond, q), y, s, q)
     table = d.screening[0] if d.screening else pl.DataFrame()
@@ -51,7 +56,7 @@ def _rows(name: str, value: float, pred: np.ndarray, y: np.ndarray, s: np.ndarra
     return out
 
 
-def unclosed(closure: "polars.DataFrame") -> list[str]:  # noqa: F821
+def unclosed(closure: polars.DataFrame) -> list[str]:
     """The quantities no single candidate brings within 2 sigma, each with
     the candidate that comes closest: "quantity (best: name, z sigma)"."""
     import polars as pl

@@ -12,7 +12,7 @@ lowest ball), the friction heat equals the reference heat flow
 
 So every catalogue row is a published friction heat Phi_r at a known speed,
 load and viscosity. Each heat model thermobear offers is evaluated there
-with :func:`thermobear.thermal.isothermal_heat`; each candidate calibrates
+with [`thermobear.thermal.isothermal_heat`][thermobear.isothermal_heat]; each candidate calibrates
 at most one input on the set's calibration bearings, the candidate with the
 lowest AIC (chi^2 + 2 k) on them is chosen, and every other bearing is held
 out."""
@@ -22,12 +22,18 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .._types import Lubrication
 from ..bearing import Bearing
+from ..errors import ConfigError
 from .catalogue import inch_ball_mm
 from .result import SetResult
+
+if TYPE_CHECKING:
+    import polars
 
 
 def reference_heat_flow_w(bore_mm: float, outer_diameter_mm: float, width_mm: float) -> float:
@@ -77,7 +83,7 @@ class HeatCandidate:
         return 1 if self.parameter else 0
 
 
-def heat_candidates(lubrication: str) -> list[HeatCandidate]:
+def heat_candidates(lubrication: Lubrication) -> list[HeatCandidate]:
     """The baseline (Palmgren with the lubrication method's f0 and ball
     drag) and the alternatives an engineer would try."""
     from ..thermal import lubrication_defaults
@@ -116,7 +122,7 @@ def heat_candidates(lubrication: str) -> list[HeatCandidate]:
     ]
 
 
-def reference_points(data: dict) -> "polars.DataFrame":  # noqa: F821
+def reference_points(data: dict) -> polars.DataFrame:
     """One row per bearing: ``bearing``, ``speed_rpm`` (the reference
     speed), ``radial_n`` (the reference load), ``quantity``
     (``reference_heat_w``), ``value`` (Phi_r), ``sigma``, ``label``."""
@@ -160,7 +166,7 @@ def oil_temperature_for(lubricant: str, viscosity_cst: float) -> float:
 class _Evaluator:
     """Model heat of every bearing of a set for a candidate setting (cached)."""
 
-    def __init__(self, data: dict, pts: "polars.DataFrame"):  # noqa: F821
+    def __init__(self, data: dict, pts: polars.DataFrame):
         cond = data["conditions"]
         self.lubricant = str(cond["oil"])
         self.oil_c = oil_temperature_for(self.lubricant, float(cond["viscosity_cst"]))
@@ -173,6 +179,10 @@ class _Evaluator:
 
         opts = dict(cand.options)
         if cand.parameter:
+            if value is None:
+                raise ConfigError(
+                    f"invalid value = None: the candidate {cand.name} calibrates {cand.parameter}"
+                )
             opts[cand.parameter] = float(value)
         out = np.empty(len(rows))
         for j, i in enumerate(rows):
@@ -245,7 +255,7 @@ def run_reference_speed(data: dict) -> SetResult:
     pts = reference_points(data)
     cal = np.isin(pts["bearing"].to_numpy(), data["calibration"]["calibrate_on"])
     ev = _Evaluator(data, pts)
-    cands = heat_candidates(str(data["conditions"]["lubrication"]))
+    cands = heat_candidates(data["conditions"]["lubrication"])
     rows = _candidate_rows(ev, cands, cal)
     free = [r for r in rows if not r["at_bound"]] or rows
     best = min(free, key=lambda r: r["aic"])
@@ -279,12 +289,12 @@ def run_reference_speed(data: dict) -> SetResult:
     return res
 
 
-def _ratio_range(frame: "polars.DataFrame", col: str) -> str:  # noqa: F821
+def _ratio_range(frame: polars.DataFrame, col: str) -> str:
     r = (frame[col] / frame["value"]).to_numpy()
     return f"{r.min():.2f}-{r.max():.2f} x"
 
 
-def _verdict(frame: "polars.DataFrame", best: dict, oil_c: float) -> str:  # noqa: F821
+def _verdict(frame: polars.DataFrame, best: dict, oil_c: float) -> str:
     v = best["_value"]
     par = f" with {best['parameter']} = {v:.3g}" if v is not None else ""
     before, after = _ratio_range(frame, "model_before"), _ratio_range(frame, "model_after")
@@ -295,7 +305,7 @@ def _verdict(frame: "polars.DataFrame", best: dict, oil_c: float) -> str:  # noq
     )
 
 
-def _notes(frame: "polars.DataFrame") -> list[str]:  # noqa: F821
+def _notes(frame: polars.DataFrame) -> list[str]:
     return [
         "Catalogue data (the maker's reference speeds, computed with the maker's own friction "
         "model under the ISO 15312 reference conditions), not a measurement of one bearing.",
@@ -307,7 +317,7 @@ def _notes(frame: "polars.DataFrame") -> list[str]:  # noqa: F821
     ]
 
 
-def _missing(frame: "polars.DataFrame", data: dict) -> str:  # noqa: F821
+def _missing(frame: polars.DataFrame, data: dict) -> str:
     held = frame.filter(frame["heldout"])
     z = ((held["model_after"] - held["value"]) / held["sigma"]).to_numpy()
     bad = np.abs(z) > 2.0

@@ -5,8 +5,12 @@ of the point's sigma)."""
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from .result import SetResult
+
+if TYPE_CHECKING:
+    import polars
 
 
 def _figure(r: SetResult, out: Path) -> Path:
@@ -43,7 +47,7 @@ def _figure(r: SetResult, out: Path) -> Path:
     return path
 
 
-def _md_table(df: "polars.DataFrame") -> list[str]:  # noqa: F821
+def _md_table(df: polars.DataFrame) -> list[str]:
     cols = df.columns
     lines = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
     for row in df.iter_rows():

@@ -1,4 +1,4 @@
-"""The outcome of validating one set: :class:`SetResult`."""
+"""The outcome of validating one set: [`SetResult`][thermobear.validation.result.SetResult]."""
 
 from __future__ import annotations
 
@@ -59,3 +59,28 @@ class SetResult:
         their bounds."""
         z = self.heldout_max_sigma_after
         return bool(z == z and z <= 2.0 and self.parameters_in_bounds)
+
+    def summary(self) -> str:
+        """The set's outcome in a few lines: pass or not, baseline and
+        held-out errors, the verdict, the calibrated values, what is
+        missing, the notes."""
+        lines = [
+            f"{self.name}: {'passes' if self.passes else 'does not pass'} ({self.title})",
+            f"  {self.points.height} points; baseline max |model - value| / sigma "
+            f"{self.baseline_max_sigma:.3g}; held-out after calibration "
+            f"{self.heldout_max_sigma_after:.3g}",
+            f"  verdict: {self.verdict}",
+        ]
+        for c in self.calibrated:
+            lines.append(
+                f"  calibrated {c['name']} = {c['value']:.4g} {c.get('unit', '')} "
+                f"[{c['lower']:.4g}, {c['upper']:.4g}]".rstrip()
+            )
+        if self.missing:
+            lines.append(f"  missing: {self.missing}")
+        lines += [f"note: {n}" for n in self.notes]
+        return "\n".join(lines)
+
+    def __repr__(self) -> str:
+        state = "passes" if self.passes else "does not pass"
+        return f"SetResult({self.name!r}, {self.points.height} points, {state})"

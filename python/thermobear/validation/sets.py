@@ -7,9 +7,12 @@ from __future__ import annotations
 
 import tomllib
 from importlib import resources
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..errors import ConfigError
+
+if TYPE_CHECKING:
+    import polars
 
 
 def set_names() -> list[str]:
@@ -34,12 +37,12 @@ def load_set(name: str) -> dict[str, Any]:
     return data
 
 
-def points_frame(data: dict) -> "polars.DataFrame":  # noqa: F821
+def points_frame(data: dict) -> polars.DataFrame:
     """The set's points as a polars frame: its ``[[points]]``, or for a
     catalogue set the rows expanded from ``[[bearings]]``
-    (:func:`thermobear.validation.catalogue.catalogue_points`) or, for a
+    (``thermobear.validation.catalogue.catalogue_points``) or, for a
     reference-speed set, one row per bearing
-    (:func:`thermobear.validation.reference_speed.reference_points`); every row has
+    (``thermobear.validation.reference_speed.reference_points``); every row has
     ``quantity``, ``value`` and ``sigma``."""
     import polars as pl
 

@@ -1,19 +1,22 @@
 """The spindle sets (seed B's quoted numbers): the seed ceramic spindle with
 every effect on except the magnetic pull (an assumption about the motor,
-off by default in the registry), diagnosed with :func:`thermobear.diagnose`
+off by default in the registry), diagnosed with [`thermobear.diagnose`][thermobear.diagnose]
 on the set's points with the runs of ``[calibration] holdout_runs`` held
 out; the closure table says what closes each quantity's gap."""
 
 from __future__ import annotations
 
 import time
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..diagnosis import SpindleModelSpec, diagnose
 from ..spindle import Spindle
 from .closure import closure_table, unclosed
 from .result import SetResult
 from .sets import points_frame
+
+if TYPE_CHECKING:
+    import polars
 
 
 def seed_b_baseline(preset: str = "seed-ceramic-spindle") -> SpindleModelSpec:
@@ -82,10 +85,11 @@ def run_spindle(data: dict) -> SetResult:
     return res
 
 
-def reference_table(data: dict, model: SpindleModelSpec) -> "polars.DataFrame":  # noqa: F821
+def reference_table(data: dict, model: SpindleModelSpec) -> polars.DataFrame:
     """The set's ``[[reference]]`` values (the paper's model, not
     measurements) beside the baseline's value of the named
-    :meth:`thermobear.Spindle.thermal_state` column; not calibrated."""
+    [`thermobear.Spindle.thermal_state`][thermobear.Spindle.thermal_state] column; not
+    calibrated."""
     import polars as pl
 
     rows = []
@@ -99,12 +103,12 @@ def reference_table(data: dict, model: SpindleModelSpec) -> "polars.DataFrame": 
     return pl.DataFrame(rows) if rows else pl.DataFrame()
 
 
-def wide(closure: "polars.DataFrame") -> "polars.DataFrame":  # noqa: F821
+def wide(closure: polars.DataFrame) -> polars.DataFrame:
     """The closure table with one row per candidate, one column per quantity."""
     return closure.pivot(on="quantity", index=["candidate", "value"], values="max_abs_sigma")
 
 
-def _spring_note(pts: "polars.DataFrame", d: Any) -> str:  # noqa: F821
+def _spring_note(pts: polars.DataFrame, d: Any) -> str:
     """What the paper's own growth and preload imply for the spring rate,
     beside what the diagnosis calibrated."""
     import polars as pl
@@ -113,7 +117,7 @@ def _spring_note(pts: "polars.DataFrame", d: Any) -> str:  # noqa: F821
     p = pts.filter(pl.col("quantity") == "operating_preload_n").sort("speed_rpm")
     if g.height == 0 or g.height != p.height:
         return "no growth/preload pairs in the set"
-    rate = (p["value"] - p["preload_n"]) / g["value"]
+    rate = float(((p["value"] - p["preload_n"]) / g["value"]).to_numpy().mean())
     cal = [r for r in (d.screening[0].iter_rows(named=True) if d.screening else ())
            if r.get("candidate") == "spring_rate_n_per_um"]  # fmt: skip
     got = f"{cal[0]['value']:.3g} N/um" if cal else "not screened"
@@ -121,7 +125,7 @@ def _spring_note(pts: "polars.DataFrame", d: Any) -> str:  # noqa: F821
     ratio = float((mg["model_before"] / mg["value"]).mean())
     return (
         f"The paper's compensation preload over its growth implies a spring rate of "
-        f"{rate.mean():.3g} N/um (the spindle's own rate); the diagnosis calibrates {got}: a "
+        f"{rate:.3g} N/um (the spindle's own rate); the diagnosis calibrates {got}: a "
         f"softer spring that hides the axial growth gap (model {ratio:.2g} x the paper's) in "
         "the preload instead of closing it. The growth gap itself (the spindle's assumed "
         "lengths and expansion path) has no candidate."

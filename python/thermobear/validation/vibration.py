@@ -1,17 +1,18 @@
-"""Seed B's vibration data (issue 12 item 9): which source -- rotor
+"""Seed B's vibration data: which source -- rotor
 unbalance, shaft runout or thermal displacement -- does the measured
-18.92 mm/s at 18,000 r/min support? :class:`VibrationSourceSpec` is a model
-spec in the protocol of :func:`thermobear.diagnose` whose one quantity,
+18.92 mm/s at 18,000 r/min support? ``VibrationSourceSpec`` is a model
+spec in the protocol of [`thermobear.diagnose`][thermobear.diagnose] whose one quantity,
 ``velocity_mm_s`` (the 1X velocity amplitude at the shaft end), is the sum
 of three sources:
 
-* unbalance: the rotor's forced response (:func:`thermobear.vibration`, 1X
+* unbalance: the rotor's forced response ([`thermobear.vibration`][thermobear.vibration], 1X
   amplitude ``x1_mm_s``; linear in the ISO 21940 grade, default G2.5);
 * runout: a once-per-revolution eccentricity epsilon of the shaft end seen
   by the non-contact vibrometer, omega epsilon (default 0);
 * thermal displacement: seed B's own model, omega u_Tr with u_Tr the front
   bearing's radial thermal displacement from the coupled steady state
-  (:func:`thermobear.rotor.displacement_vibration`); off in the baseline.
+  ([`thermobear.rotor.displacement_vibration`][thermobear.rotor.displacement_vibration]);
+  off in the baseline.
 
 Assumptions: the amplitudes add (the phases are unknown: an upper bound);
 seed B's 18.92 mm/s is read as the 1X amplitude (its text does not say RMS
@@ -21,7 +22,7 @@ or peak; its spectrum shows 1X dominating).
 from __future__ import annotations
 
 import time
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 import numpy as np
 
@@ -32,6 +33,9 @@ from ..rotor import displacement_vibration, orbit_velocity_mm_s, vibration
 from ..spindle import Spindle
 from .result import SetResult
 from .sets import points_frame
+
+if TYPE_CHECKING:
+    import polars
 
 _Q = "velocity_mm_s"
 #: Unbalance grade bounds [mm/s]: from G0.4 to G40 -- far coarser than the
@@ -63,7 +67,7 @@ class VibrationSourceSpec(ModelSpec):
 
     def with_setting(self, add_effects: Sequence[str] = (), **options: Any) -> ModelSpec:
         """A copy with effects added and options replaced (shares the cache)."""
-        new = VibrationSourceSpec(self.spindle, set(self.effects) | set(add_effects))
+        new = VibrationSourceSpec(self.spindle, (*self.effects, *add_effects))
         new.options = _checked({**self.options, **options})
         new._cache = self._cache
         return new
@@ -208,7 +212,7 @@ def run_vibration(data: dict) -> SetResult:
     return res
 
 
-def vibration_finding(sources: "pl.DataFrame", verdict: str) -> str:  # noqa: F821
+def vibration_finding(sources: polars.DataFrame, verdict: str) -> str:
     """The finding in words, from the sources table and the verdict."""
     r = {row["source"]: row for row in sources.iter_rows(named=True)}
     u, e = r["unbalance_grade"], r["runout_um"]
