@@ -416,3 +416,5 @@ def test_calibrate_writes_what_tb_calibrate_finds(tmp_path, capsys, seed_b):
     summary = (out / "calibration_summary.txt").read_text().strip()
     assert summary == doc["summary"] and summary in printed
     assert "lubrication_factor_f0" in summary
+    model = tb.CalibratedModel.load(out / "calibrated_model.json")
+    assert model.values.tolist() == want["value"].to_list()  # the same estimate, bit for bit

@@ -156,9 +156,22 @@ def test_hidden_churning_loss_named_at_high_snr_and_gap_shrinks(baseline):
             named += 1
             a = d.accepted[0]
             covered += a["lower_95"] <= f0_true <= a["upper_95"]
-            gap = d.gap.filter(pl.col("rms_before_sigma") > 3.0)  # where the gap is signal
+            # Pooled per quantity over its speed bands (a band of 2-3 points
+            # is too few to judge alone): where the gap is signal, it halves.
+            gap = (
+                d.gap.group_by("quantity")
+                .agg(
+                    ((pl.col("n") * pl.col("rms_before_sigma") ** 2).sum() / pl.col("n").sum())
+                    .sqrt()
+                    .alias("before"),
+                    ((pl.col("n") * pl.col("rms_after_sigma") ** 2).sum() / pl.col("n").sum())
+                    .sqrt()
+                    .alias("after"),
+                )
+                .filter(pl.col("before") > 3.0)
+            )
             assert gap.height >= 3
-            assert (gap["rms_after_sigma"] < 0.5 * gap["rms_before_sigma"]).all()
+            assert (gap["after"] < 0.5 * gap["before"]).all()
     assert named >= 90
     assert covered >= 0.85 * named  # 95 % profile intervals
 

@@ -318,7 +318,7 @@ def test_grid_values_ranges_and_errors():
     with pytest.raises(tb.ConfigError, match="kind = 'rotor'"):
         tb.Study("rotor", {})
     table = kinds_table()
-    assert {"bearing", "thermal", "spindle", "gear"} == set(table["kind"])
+    assert {"bearing", "thermal", "spindle", "gear", "prediction"} == set(table["kind"])
 
 
 @pytest.mark.parametrize(

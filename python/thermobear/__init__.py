@@ -15,6 +15,9 @@ or below; ``tests/test_layout.py`` checks it):
   ``rotor`` -- the machines;
 * ``diagnosis`` -- model against measurements, step by step;
 * ``study`` -- design studies: grids in chunks, parquet, resume, Dask;
+* ``predict`` -- a calibrated model's predictions with uncertainty bands
+  (the name ``thermobear.predict`` is the function; its modules are
+  ``thermobear.predict.band`` ...);
 * ``plot`` -- figures, one module per topic;
 * ``studies`` (the seed studies, ``thermobear demo``) and ``validation``
   (published data sets, ``thermobear validate``), ``cli`` on top.
@@ -40,6 +43,7 @@ from .bearing import Bearing, BearingSolution, Material
 from .config import load_config, seed_config, seed_config_names
 from .diagnosis import (
     BearingModelSpec,
+    CalibratedModel,
     Calibration,
     Diagnosis,
     SpindleModelSpec,
@@ -72,6 +76,11 @@ from .gear import (
     regimes,
 )
 from .glossary import glossary
+from .predict import (  # the function shadows the subpackage
+    predict,
+    regime_boundaries,
+    separating_measurement,
+)
 from .rotor import campbell, critical_speeds, spectrum, spectrum_orders, vibration
 from .spindle import (
     Spindle,
@@ -171,6 +180,7 @@ __all__ = [
     # diagnosis
     "effects",
     "BearingModelSpec",
+    "CalibratedModel",
     "Calibration",
     "Diagnosis",
     "SpindleModelSpec",
@@ -185,6 +195,10 @@ __all__ = [
     # design studies
     "Study",
     "load_study",
+    # prediction with uncertainty (the subpackage is thermobear.predict.band ...)
+    "predict",
+    "regime_boundaries",
+    "separating_measurement",
     # validation against published data
     "validate",
     # the one name of each quantity

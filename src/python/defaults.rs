@@ -8,10 +8,9 @@ use pyo3::types::PyDict;
 
 use super::bearing::PyBearing;
 use super::errors::IntoPy;
-use super::solve::state_dict;
+use super::solve::{check_speed, load_vector, solve_with};
 use crate::bearing::state::{GyroCoupleSign, RacewayControl, Tilt};
-use crate::bearing::{BearingModel, SolveOptions};
-use crate::error::{finite, non_negative, Result};
+use crate::bearing::SolveOptions;
 
 /// `SolveOptions::default()` of the Rust core as a dict: `effects` (names),
 /// `raceway_control`, `gyro_couple_sign`, `tilt` ("held" or "free") with the
@@ -73,28 +72,9 @@ pub fn solve_with_default_options<'py>(
     moment_n_m: f64,
     speed_rpm: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let checked = || -> Result<([f64; 5], f64)> {
-        finite("axial_n", axial_n)?;
-        finite("radial_n", radial_n)?;
-        finite("moment_n_m", moment_n_m)?;
-        Ok((
-            [radial_n, 0.0, axial_n, 0.0, moment_n_m],
-            non_negative("speed_rpm", speed_rpm)?,
-        ))
-    };
-    let (load, speed) = checked().py_err()?;
-    let opts = SolveOptions::default();
-    let s = py
-        .detach(|| -> Result<_> {
-            let m = BearingModel::new(&bearing.inner)?;
-            if speed == 0.0 {
-                m.solve_static(&load, &opts)
-            } else {
-                m.solve(&load, speed, &opts)
-            }
-        })
-        .py_err()?;
-    state_dict(py, &s)
+    let load = load_vector(axial_n, radial_n, moment_n_m).py_err()?;
+    let speed = check_speed(speed_rpm).py_err()?;
+    solve_with(py, &bearing.inner, &load, speed, &SolveOptions::default())
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

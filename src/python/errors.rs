@@ -110,6 +110,22 @@ pub fn partial_error(
     }
 }
 
+/// The columns of a sweep, or, when some speeds failed, the error of the
+/// first failure carrying them ([`partial_error`]).
+pub fn finish_sweep<'py>(
+    py: Python<'py>,
+    speeds: &[f64],
+    columns: Bound<'py, pyo3::types::PyDict>,
+    finished: Vec<usize>,
+    failed: &[(usize, Error)],
+) -> PyResult<Bound<'py, pyo3::types::PyDict>> {
+    if failed.is_empty() {
+        Ok(columns)
+    } else {
+        Err(partial_error(py, speeds, columns.into_any(), finished, failed))
+    }
+}
+
 /// `?`-friendly conversion.
 pub trait IntoPy<T> {
     fn py_err(self) -> PyResult<T>;

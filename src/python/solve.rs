@@ -43,7 +43,7 @@ pub fn load_vector(axial_n: f64, radial_n: f64, moment_n_m: f64) -> Result<[f64;
     Ok([radial_n, 0.0, axial_n, 0.0, moment_n_m])
 }
 
-fn check_speed(speed_rpm: f64) -> Result<f64> {
+pub fn check_speed(speed_rpm: f64) -> Result<f64> {
     non_negative("speed_rpm", speed_rpm)
 }
 
@@ -123,13 +123,25 @@ pub fn solve_point<'py>(
     let speed = check_speed(speed_rpm).py_err()?;
     let mut opts = solve_options(effects, raceway_control).py_err()?;
     opts.tilt = tilt_option(misalignment_rad, moment_n_m).py_err()?;
+    solve_with(py, bearing, &load, speed, &opts)
+}
+
+/// The state dict of `bearing` under `load` at `speed` [rpm] (static at 0,
+/// quasi-static above), solved with the GIL released.
+pub fn solve_with<'py>(
+    py: Python<'py>,
+    bearing: &crate::bearing::Bearing,
+    load: &[f64; 5],
+    speed: f64,
+    opts: &SolveOptions,
+) -> PyResult<Bound<'py, PyDict>> {
     let s = py
         .detach(|| -> Result<BearingState> {
             let m = BearingModel::new(bearing)?;
             if speed == 0.0 {
-                m.solve_static(&load, &opts)
+                m.solve_static(load, opts)
             } else {
-                m.solve(&load, speed, &opts)
+                m.solve(load, speed, opts)
             }
         })
         .py_err()?;
@@ -221,16 +233,7 @@ pub fn stiffness_curve<'py>(
     })?;
     let (states, finished, failed) = super::errors::split_results(results);
     let d = curve_columns(py, &states)?;
-    if !failed.is_empty() {
-        return Err(super::errors::partial_error(
-            py,
-            &speeds,
-            d.into_any(),
-            finished,
-            &failed,
-        ));
-    }
-    Ok(d)
+    super::errors::finish_sweep(py, &speeds, d, finished, &failed)
 }
 
 /// Columns of a stiffness curve (one entry per state).

@@ -293,16 +293,7 @@ pub fn thermal_stiffness_curve<'py>(
         col(&|s| c.model().ring_expansion_m(crate::units::rpm_to_rad_s(s.speed_rpm)) * 1e6).into_pyarray(py),
     )?;
     d.set_item("thermal_iterations", col(&|s| s.iterations as f64).into_pyarray(py))?;
-    if !failed.is_empty() {
-        return Err(super::errors::partial_error(
-            py,
-            &speeds,
-            d.into_any(),
-            finished,
-            &failed,
-        ));
-    }
-    Ok(d)
+    super::errors::finish_sweep(py, &speeds, d, finished, &failed)
 }
 
 /// Coupled thermal states of many operating points (arrays of one length:

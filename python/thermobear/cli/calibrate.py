@@ -75,7 +75,9 @@ def calibrate_files(
     value, lower_95, upper_95, bounds, null, at_bound, identified),
     ``calibration_points`` (every measured point with the model before
     and after), ``calibration.json`` (the same estimates and the fit
-    statistics) and ``calibration_summary.txt``. Returns the
+    statistics), ``calibration_summary.txt`` and ``calibrated_model.json``
+    (the calibrated model of the first file,
+    [`CalibratedModel.load`][thermobear.CalibratedModel.load] reads it back). Returns the
     [`Calibration`][thermobear.Calibration] and the files written."""
     from ..studies.output import write_table
 
@@ -112,4 +114,5 @@ def calibrate_files(
     js.write_text(json.dumps(doc, indent=2, allow_nan=False) + "\n")
     txt = out / "calibration_summary.txt"
     txt.write_text(summary + "\n")
-    return cal, files + [js, txt]
+    model = cal.model.save(out / "calibrated_model.json")
+    return cal, files + [js, txt, model]

@@ -30,6 +30,7 @@ The machines behind the protocol of ``thermobear.diagnosis.protocol``: one beari
 """
 
 from .bearing_spec import BearingModelSpec, model_from_toml
+from .calibrated import CalibratedModel
 from .candidates import Candidate, candidates, sensor_offset_candidates
 from .joint import Calibration, calibrate
 from .measurements import QUANTITIES, load_measurements, synthetic_measurements, typical_sigma
@@ -53,6 +54,7 @@ __all__ = [
     "SPINDLE_QUANTITIES",
     "THERMAL_DISPLACEMENT_EFFECTS",
     "BearingModelSpec",
+    "CalibratedModel",
     "Calibration",
     "Candidate",
     "Diagnosis",

@@ -7,7 +7,7 @@ bearing's candidate list and the candidate table
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Protocol, Sequence
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -28,7 +28,15 @@ from .registry import (
 if TYPE_CHECKING:
     import polars
 
-    from .bearing_spec import BearingModelSpec
+
+class _BearingBaseline(Protocol):
+    """What the candidate list reads of a bearing baseline (a
+    ``BearingModelSpec``; named structurally so this module, which the spec
+    imports, does not import it back)."""
+
+    effects: tuple[str, ...]
+    options: dict[str, Any]
+    bearing: Any
 
 
 @dataclass(frozen=True)
@@ -55,7 +63,7 @@ class Candidate:
 
 
 def _candidate_list(
-    model: Optional[BearingModelSpec], quantities: Sequence[str] = ()
+    model: Optional[_BearingBaseline], quantities: Sequence[str] = ()
 ) -> list[Candidate]:
     from .. import _native
 
@@ -133,7 +141,7 @@ def _candidate_list(
     return out
 
 
-def _lubrication_bounds(model: Optional[BearingModelSpec]) -> dict:
+def _lubrication_bounds(model: Optional[_BearingBaseline]) -> dict:
     """f0 and drag oil-fraction bounds of the baseline's lubrication method
     (none without one): option -> (lower, upper)."""
     from .. import _native

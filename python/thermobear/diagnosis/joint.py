@@ -20,15 +20,19 @@ identified."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Protocol, Sequence
+from typing import TYPE_CHECKING, Any, Protocol, Sequence
 
 import numpy as np
 
 from ..errors import ConfigError, ThermobearError
+from .calibrated import calibration_models
 from .measurements import prepare_measurements
 from .protocol import as_spec
 from .setting import _predict, _Setting
 from .statistics import fisher_identifiability
+
+if TYPE_CHECKING:
+    from .calibrated import CalibratedModel
 
 #: Most distinct candidates calibrated together.
 MAX_JOINT = 3
@@ -55,6 +59,23 @@ class Calibration:
     not_identified: list
     points: Any
     notes: list = field(default_factory=list)
+    _models: dict = field(default_factory=dict, repr=False, compare=False)
+
+    @property
+    def model(self) -> CalibratedModel:
+        """The calibrated model of the first data set (see
+        [`model_for`][thermobear.Calibration.model_for]): a
+        [`CalibratedModel`][thermobear.CalibratedModel]."""
+        if not self._models:
+            raise ConfigError("invalid calibration: it carries no calibrated model")
+        return next(iter(self._models.values()))
+
+    def model_for(self, set_label: str) -> CalibratedModel:
+        """The calibrated model of data set ``set_label``: its spec with the
+        values that act on it (the shared ones and its own per-set ones)."""
+        if str(set_label) in self._models:
+            return self._models[str(set_label)]
+        raise ConfigError(f"invalid set_label = {set_label!r}: not a data set of this calibration")
 
     def summary(self) -> str:
         """The calibration in a few lines: each value with its 95 % profile
@@ -281,7 +302,10 @@ def calibrate(datasets, parameters: Sequence[str], per_set: Sequence[str] = ()) 
     for j, (a, b) in enumerate(intervals):
         if a <= prob.lo[j] and b >= prob.hi[j]:
             weak.add(j)
-    return _result(prob, theta, intervals, weak, (chi_min, chi_before, n, phi, cond))
+    result = _result(prob, theta, intervals, weak, (chi_min, chi_before, n, phi, cond))
+    models = calibration_models(prob, theta, jac, intervals, phi)
+    result._models = {label: m for (label, _, _), m in zip(prob.sets, models, strict=True)}
+    return result
 
 
 def _result(prob: _Problem, theta, intervals, weak, stats) -> Calibration:

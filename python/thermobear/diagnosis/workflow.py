@@ -63,7 +63,8 @@ from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
 import numpy as np
 
 from .acceptance import accepted_record, joint_refit, select
-from .audit import audit, gap_table
+from .audit import audit
+from .calibrated import diagnosis_model
 from .candidates import Candidate, candidate_pool, split_evaluable
 from .control import (
     CARRIERS,
@@ -74,12 +75,18 @@ from .control import (
     generic_control,
     matching_control,
 )
+from .explain import (
+    calibrated_without_heldout,
+    explained_gap,
+    explained_points,
+    explained_predictions,
+)
 from .identifiability import identifiability
 from .measurements import MeasuredData, prepare_measurements
 from .outliers import flag_outliers, outlier_table
 from .protocol import ModelSpec, as_spec
 from .result import Diagnosis
-from .screening import _curve, _fit, candidate_curves, screen, screening_table
+from .screening import candidate_curves, screen, screening_table
 from .setting import _predict, _Setting
 from .statistics import _chi2, noise_p_value
 from .ties import significant_rivals, tie_gap, tie_table
@@ -125,6 +132,8 @@ class _Search:
     ties: Any = None
     tie_gap: Any = None
     unresolved: Optional[tuple[list, float, GenericControl, float, int]] = None
+    withdrawn: list = field(default_factory=list)
+    tie_control: Optional[GenericControl] = None
     carriers: dict = field(default_factory=dict)
     screening: list = field(default_factory=list)
     fingerprints: Any = None
@@ -236,6 +245,8 @@ def _control_check(s: _Search, pred0: np.ndarray, margin: float) -> None:
         gain = _chi2(d.residual(pred0)) - chi_named - k * np.log(d.n)
         records = list(s.accepted) + _also_unresolved(s, ctrl)
         s.unresolved = (records, gain, ctrl, chi_named, k)
+        # withdrawn: no longer the setting; kept as the named explanation
+        s.withdrawn = list(s.accepted_cands)
         s.accepted, s.accepted_cands = [], []
 
 
@@ -295,6 +306,7 @@ def _screening_round(s: _Search, rnd: int, rules: _Rules) -> bool:
             d, s.pred, best["chi2"], 1, s.carriers, CONTROL_MARGIN
         ):
             s.tie.append("generic_control")
+            s.tie_control = ctrl
         named = [m for m in s.tie if m in fits]
         s.ties = tie_table(named, rows, fits, curves, s, rules.envelope, rules.suggest)
         s.tie_gap = tie_gap(named, fits, s)
@@ -334,16 +346,17 @@ def _conclude(
     import polars as pl
 
     d = s.data
-    pred1 = _predict(s.model, s.st, full.cond, full.quantity)
+    # under "unresolved" the withdrawn candidates are no longer the setting
+    st = _Setting() if s.unresolved is not None else s.st
+    pred1 = _predict(s.model, st, full.cond, full.quantity)
     r1 = d.residual(s.pred)
     p_final = noise_p_value(_chi2(r1), d.n)
     out_table = outlier_table(full.df, ~keep, z, pred1)
     verdict = verdict_text(s.accepted, s.tie, p_final, s.unresolved, out_table)
     _final_notes(s, full, p_final)
-    pred_x = _extrapolation_prediction(s, full) if full.held.any() else pred1
-    r0f, rxf = full.residual(pred0), full.residual(pred_x)
-    gmask = (full.held if full.held.any() else np.ones(full.n, dtype=bool)) & keep
-    gap = gap_table(full.df, r0f, rxf, gmask)
+    pred_x = calibrated_without_heldout(s, s.accepted_cands, full) if full.held.any() else pred1
+    preds = explained_predictions(s)
+    gap = explained_gap(s, pred0[keep], preds)
     points = full.df.with_columns(
         pl.Series("model_before", pred0),
         pl.Series("model_after", pred1),
@@ -354,29 +367,10 @@ def _conclude(
     return Diagnosis(
         baseline_audit, s.fingerprints, s.lookalikes, s.screening, s.accepted, s.tie,
         verdict, gap, points, sorted(set(s.not_evaluable)), s.notes, ties=s.ties,
-        tie_gap=s.tie_gap, outliers=out_table,
+        tie_gap=s.tie_gap, outliers=out_table, explained=explained_points(s, preds),
         unresolved=[] if s.unresolved is None else s.unresolved[0],
+        _model=diagnosis_model(s, verdict),
     )  # fmt: skip
-
-
-def _extrapolation_prediction(s: _Search, full: MeasuredData) -> np.ndarray:
-    """The accepted candidates calibrated again without the held-out points
-    (each in its round's order on the training points, then together), and
-    their prediction of every row: the gap table's "after" on the held-out
-    points is then a true extrapolation."""
-    d = s.data
-    train = d.train
-    st, records = _Setting(), []
-    for c in s.accepted_cands:
-        cu = _curve(s.model, st, c, d.cond, d.quantity, s.base_options)
-        value = 1.0 if cu is None or c.kind == "switch" else _fit(cu, d.y, d.s, train)["value"]
-        st = st.apply(c, value, s.base_options)
-        records.append({"value": value})
-    joint = joint_refit(
-        s.model, s.accepted_cands, records, d.cond, d.quantity, d.y, d.s, train, s.base_options
-    )
-    st = joint[0] if joint is not None else st
-    return _predict(s.model, st, full.cond, full.quantity)
 
 
 def _final_notes(s: _Search, full: MeasuredData, p_final: float) -> None:

@@ -242,52 +242,41 @@ def bifurcation(
     jump_trend_factor: Optional[float] = None,
     jump_window_speeds: Optional[int] = None,
 ) -> polars.DataFrame:
-    """Speed sweep (A Figs. 14-15). ``"down"`` (default: a run-down from the
-    top speed) and ``"up"`` carry the state from speed to speed
-    (continuation), ``"independent"`` starts every speed from the static
-    state (parallel). ``speeds_rpm`` in any order (distinct): they
-    are sorted and swept ascending for ``"up"``/``"independent"``, descending
-    for ``"down"``; the rows come in that sweep order.
+    """Speed sweep (A Figs. 14-15). ``"down"`` (default: a run-down from the top speed) and ``"up"``
+    carry the state from speed to speed (continuation), ``"independent"`` starts every speed from
+    the static state (parallel). ``speeds_rpm`` in any order (distinct): they are sorted and swept
+    ascending for ``"up"``/``"independent"``, descending for ``"down"``; the rows come in that
+    sweep order.
 
-    One row per Poincare sample (once per mesh period): ``speed_rpm``,
-    ``dte_um`` (dynamic transmission error ``delta_n - e``), and per speed:
-    ``regime`` (period-n / quasi-periodic / chaotic), ``period``, ``impact``,
-    ``lyapunov_per_mesh_period`` / ``lyapunov_per_s`` and their standard
-    errors ``lyapunov_stderr_per_mesh_period`` / ``lyapunov_stderr_per_s``
-    (non-periodic speeds; per s = per mesh period x mesh frequency),
-    ``zero_one_k`` (0-1 test K), ``transient_periods`` (run, incl. the
-    adaptive extension), ``settled`` (False: the section was still
-    converging at ``max_transient_periods``; the label is provisional),
-    ``dte_min_um``, ``dte_max_um``, ``jump_after`` (amplitude jump to the
-    next speed in sweep order, same non-chaotic regime family only),
-    ``transition_after`` (regime-family change to the next speed:
-    ``enters-chaos``, ``exits-chaos``, ``enters-quasi-periodic``,
-    ``exits-quasi-periodic``) with its size ``transition_dte_min_change_um``,
-    ``transition_dte_max_change_um``, and ``direction``.
+    One row per Poincare sample (once per mesh period): ``speed_rpm``, ``dte_um`` (dynamic
+    transmission error ``delta_n - e``), and per speed: ``regime`` (period-n / quasi-periodic /
+    chaotic), ``period``, ``impact``, ``lyapunov_per_mesh_period`` / ``lyapunov_per_s`` and their
+    standard errors ``lyapunov_stderr_per_mesh_period`` / ``lyapunov_stderr_per_s`` (non-periodic
+    speeds; per s = per mesh period x mesh frequency), ``zero_one_k`` (0-1 test K),
+    ``transient_periods`` (run, incl. the adaptive extension), ``settled`` (False: the section was
+    still converging at ``max_transient_periods``; the label is provisional), ``dte_min_um``,
+    ``dte_max_um``, ``jump_after`` (amplitude jump to the next speed in sweep order, same
+    non-chaotic regime family only), ``transition_after`` (regime-family change to the next speed:
+    ``enters-chaos``, ``exits-chaos``, ``enters-quasi-periodic``, ``exits-quasi-periodic``) with
+    its size ``transition_dte_min_change_um``, ``transition_dte_max_change_um``, and ``direction``.
 
-    Classifier settings (keyword-only, ``None`` = default):
-    ``max_transient_periods`` [mesh periods] cap of the adaptive transient
-    (default max(1500, 5 x transient_periods); = transient_periods turns the
-    extension off); ``max_period`` [mesh periods] largest period tested
-    (default 32, needs 2 x max_period <= record_periods); ``period_rel_tol``
-    [-] tolerance of the period and settling tests relative to the orbit's
-    peak-to-peak DTE (1e-4); ``converging_ratio`` [-] a mismatch shrinking
-    below this fraction of its first-quarter value is still settling (0.9);
-    ``lyapunov_block_periods`` [mesh periods] block length of the Lyapunov
-    standard error (10); ``lyapunov_max_periods`` [mesh periods] longest
-    Lyapunov run while undecided (max(400, 4 x lyapunov_periods));
-    ``lyapunov_sigmas`` [-] chaos needs the exponent above the threshold by
-    this many standard errors (3); ``lyapunov_threshold_per_mesh_period``
-    [1/mesh period] (1e-3); ``zero_one_threshold`` [-] 0-1 test K for chaos
-    (0.5, used with >= 200 section points); ``jump_rel_amplitude`` [-] jump
-    step relative to the amplitude (0.2); ``jump_trend_factor`` [-] jump
-    step relative to the local median step (5), taken over
-    ``jump_window_speeds`` [speeds] neighbouring steps on each side (5).
-    Bad values raise ConfigError
-    naming the setting. ``steps_per_period`` (RK4 steps per mesh period;
-    None: 64, or more when a swept speed needs more) is checked at every
-    speed before the sweep starts (``sweep_steps``). GIL released;
-    Ctrl-C interrupts; ``progress(done, total)``."""
+    Classifier settings (keyword-only, ``None`` = default): ``max_transient_periods`` [mesh
+    periods] cap of the adaptive transient (default max(1500, 5 x transient_periods); =
+    transient_periods turns the extension off); ``max_period`` [mesh periods] largest period tested
+    (default 32, needs 2 x max_period <= record_periods); ``period_rel_tol`` [-] tolerance of the
+    period and settling tests relative to the orbit's peak-to-peak DTE (1e-4); ``converging_ratio``
+    [-] a mismatch shrinking below this fraction of its first-quarter value is still settling
+    (0.9); ``lyapunov_block_periods`` [mesh periods] block length of the Lyapunov standard error
+    (10); ``lyapunov_max_periods`` [mesh periods] longest Lyapunov run while undecided (max(400, 4
+    x lyapunov_periods)); ``lyapunov_sigmas`` [-] chaos needs the exponent above the threshold by
+    this many standard errors (3); ``lyapunov_threshold_per_mesh_period`` [1/mesh period] (1e-3);
+    ``zero_one_threshold`` [-] 0-1 test K for chaos (0.5, used with >= 200 section points);
+    ``jump_rel_amplitude`` [-] jump step relative to the amplitude (0.2); ``jump_trend_factor`` [-]
+    jump step relative to the local median step (5), taken over ``jump_window_speeds`` [speeds]
+    neighbouring steps on each side (5). Bad values raise ConfigError naming the setting.
+    ``steps_per_period`` (RK4 steps per mesh period; None: 64, or more when a swept speed needs
+    more) is checked at every speed before the sweep starts (``sweep_steps``). GIL released; Ctrl-C
+    interrupts; ``progress(done, total)``."""
     _check_system(system)
     speeds = _speeds(speeds_rpm)
     steps = sweep_steps([system], speeds, steps_per_period)

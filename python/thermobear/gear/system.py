@@ -65,6 +65,10 @@ class GearSystem:
     the older ``torque_nm`` is deprecated); negative
     is coast (the back flanks carry the load). ``mesh_damping``:
     ``"in-contact"`` (A-46 as printed, default) or ``"always"``.
+
+    ``bearings`` may be a [`CalibratedModel`][thermobear.CalibratedModel]:
+    its load scales act on the seed loads, its effects and thermal options
+    on the ``"thermal"`` schedule.
     """
 
     @renamed_kwargs(torque_nm="torque_n_m")
@@ -90,17 +94,22 @@ class GearSystem:
         mesh_stiffness_n_per_m: Optional[MeshInput] = None,
         transmission_error_um: Optional[MeshInput] = None,
     ) -> None:
+        from .._model_hook import scaled_load, unpack_model
         from ..bearing import Bearing
 
+        bearings, calibrated = unpack_model(bearings)
         if not isinstance(gear, GearPair):
             raise _config_error(f"invalid gear = {gear!r}: must be a thermobear.GearPair")
         half_um = backlash_half_um(half_backlash_um, backlash_total_um, backlash_um, 50.0)
         bearing = Bearing.preset("6208") if bearings is None else bearings
         torque = float(gear.geometry["input_torque_n_m"] if torque_n_m is None else torque_n_m)
         fa, fr = _native.seed_gear_bearing_loads(torque)
+        if calibrated:  # the calibrated load scales act on the seed loads
+            fa = scaled_load(calibrated, "axial_load_scale", fa)
+            fr = scaled_load(calibrated, "radial_load_scale", fr)
         s, kr, ka = self._support(
             bearing, stiffness, bearing_stiffness_per, bearings_per_shaft, stiffness_speeds_rpm,
-            (fa, fr),
+            (fa, fr), calibrated,
         )  # fmt: skip
         points = int(table_points)
         self.gear = gear
@@ -154,8 +163,11 @@ class GearSystem:
         bearings_per_shaft: Optional[int],
         speeds: Optional[ArrayLike],
         loads: tuple[float, float],
+        calibrated: Optional[dict[str, Any]] = None,
     ) -> tuple[Any, Any, Any]:
-        """Support stiffness schedule of one shaft (speed, kr, ka)."""
+        """Support stiffness schedule of one shaft (speed, kr, ka);
+        ``calibrated``: the options of a calibrated bearing model (its
+        effects and thermal options act in the thermal case)."""
         from ..thermal import stiffness_curve
 
         if not isinstance(stiffness, str):
@@ -175,12 +187,14 @@ class GearSystem:
         fa, fr = loads
         grid = np.asarray(STIFFNESS_SPEEDS_RPM if speeds is None else speeds, dtype=float)
         self.stiffness_case = stiffness
+        options = _thermal_schedule_options(calibrated, stiffness)
         if stiffness != "thermal":
             return _native.gear_bearing_schedule(bearing._b, stiffness, list(grid), fa, fr, n)
         try:
             df = stiffness_curve(
-                bearing, grid, axial_n=fa, radial_n=fr, mode="thermal", misalignment_rad=0.0
-            )
+                bearing, grid, axial_n=fa, radial_n=fr, mode="thermal", misalignment_rad=0.0,
+                **options,
+            )  # fmt: skip
         except Exception as e:  # the mode is added by the thermal module
             raise _config_error(
                 "invalid stiffness = 'thermal': stiffness_curve(mode='thermal') is not "
@@ -284,3 +298,26 @@ class GearSystem:
             f"k_m={p['mesh_stiffness_mean_n_per_m'] / 1e6:.0f} N/um, "
             f"2b={2 * p['half_backlash_um']:.0f} um, TE={p['te_amplitude_um']:.1f} um)"
         )
+
+
+def _thermal_schedule_options(
+    calibrated: Optional[dict[str, Any]], stiffness: str
+) -> dict[str, Any]:
+    """The keywords of the thermal stiffness curve from a calibrated
+    bearing model's options (none without one). The "speed" and "constant"
+    schedules solve with every effect on and take no thermal option: a
+    calibrated model with an effect switched off raises
+    [`ConfigError`][thermobear.ConfigError] there (its thermal options
+    would not act either; give ``stiffness="thermal"``)."""
+    if not calibrated:
+        return {}
+    opts = {k: v for k, v in calibrated.items() if "load_scale" not in k}
+    if stiffness == "thermal":
+        return opts
+    every = sorted(n for n, *_ in _native.effects())
+    if sorted(opts.get("effects", every)) != every:
+        raise _config_error(
+            f"invalid stiffness = {stiffness!r}: the calibrated bearing model switches effects "
+            "off, which only the thermal schedule honours; give stiffness='thermal'"
+        )
+    return {}

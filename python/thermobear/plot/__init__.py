@@ -1,10 +1,11 @@
 """Figures, one module per topic (bearing, thermal, spindle, rotor, gear,
-diagnosis). Every function takes ``ax=None`` (a new figure is made when
+diagnosis, prediction). Every function takes ``ax=None`` (a new figure is made when
 omitted) and returns the matplotlib Axes; matplotlib is imported lazily."""
 
 from .bearing import ball_loads, contact_angles, stiffness_cases, stiffness_curve
 from .diagnosis import diagnosis_fit, diagnosis_residuals
 from .gear import bifurcation, regime_map
+from .prediction import prediction_band, regime_probability
 from .rotor import campbell, spectrum, vibration
 from .spindle import (
     compensation_preload,
@@ -25,7 +26,9 @@ __all__ = [
     "heat_vs_speed",
     "node_temperatures",
     "optimal_preload",
+    "prediction_band",
     "regime_map",
+    "regime_probability",
     "spectrum",
     "spindle_temperatures",
     "spindle_transient",

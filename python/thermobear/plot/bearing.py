@@ -48,15 +48,24 @@ def stiffness_cases(
     ax: Axes | None = None,
     *,
     column: str = "k_xx_n_per_m",
+    seed_column: str | None = None,
 ) -> Axes:
     """One stiffness column against speed for several cases (e.g. constant,
     speed, thermal); default the radial entry ``k_xx`` of the full
-    stiffness (``"radial_stiffness_seed_n_per_m"`` for seed A's formula)."""
+    stiffness (``"radial_stiffness_seed_n_per_m"`` for seed A's formula).
+    With ``seed_column`` (e.g. ``"radial_stiffness_seed_n_per_m"``) that
+    column is drawn dashed beside each case, in the case's colour."""
     ax = get_axes(ax)
     for df, lab in zip(frames, labels, strict=False):
-        ax.plot(df["speed_rpm"].to_numpy(), df[column].to_numpy() / 1e6, label=lab)
+        s = df["speed_rpm"].to_numpy()
+        (line,) = ax.plot(s, df[column].to_numpy() / 1e6, label=lab)
+        if seed_column is not None:
+            ax.plot(s, df[seed_column].to_numpy() / 1e6, "--", color=line.get_color(), lw=1.0)
     ax.set_xlabel("speed [rpm]")
-    ax.set_ylabel(column.replace("_n_per_m", "").replace("_", " ") + " [N/µm]")
+    label = column.replace("_n_per_m", "").replace("_", " ") + " [N/µm]"
+    if seed_column is not None:
+        label += "; dashed: seed series formula"
+    ax.set_ylabel(label)
     ax.grid(True, alpha=0.3)
     ax.legend()
     return ax

@@ -9,6 +9,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .. import _native
+from .._model_hook import takes_calibrated
 from .._partial import speed_frames
 from .._types import ResponseMethod, VibrationModel
 from ..errors import ConfigError, ThermobearError
@@ -18,6 +19,7 @@ if TYPE_CHECKING:
     import polars
 
 
+@takes_calibrated()
 def vibration(
     spindle: Any,
     speeds_rpm: Optional[ArrayLike] = None,

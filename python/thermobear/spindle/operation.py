@@ -9,11 +9,13 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .._deprecation import renamed_kwargs
+from .._model_hook import takes_calibrated
 from .._names import renamed_spindle_columns, spindle_node, temperature_column
 from .spindle import SEED_B_SPRING_RATE_N_PER_UM, Spindle, _check
 
 
 @renamed_kwargs(initial_c="initial_temperature_c")
+@takes_calibrated()
 def transient(
     spindle: Spindle,
     *,

@@ -20,6 +20,7 @@ STUDIES: list[tuple[str, str]] = [
     ("seed_a_thermal", "studies.seed_a_thermal:study_seed_a_thermal"),
     ("diagnose_synthetic", "studies.diagnose_synthetic:study_diagnose"),
     ("diagnose_seed_b", "studies.diagnose_seed_b:study_diagnose_seed_b"),
+    ("rig_to_prediction", "studies.rig_to_prediction:study_rig_to_prediction"),
 ]
 
 

@@ -11,7 +11,8 @@ the chunks finish, resumed where an earlier run stopped.
 
 Kinds of point: ``bearing`` (quasi-static solve at speed), ``thermal``
 (coupled thermal state of a bearing), ``spindle`` (coupled spindle state),
-``gear`` (motion regime at a speed);
+``gear`` (motion regime at a speed), ``prediction`` (a calibrated model's
+outputs at a sample of its calibrated values, ``thermobear.predict.engine``);
 [`kinds_table`][thermobear.study.kinds_table] lists every input.
 A study can be described in TOML ([`load_study`][thermobear.load_study], ``thermobear study``).
 """

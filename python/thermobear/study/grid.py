@@ -22,6 +22,8 @@ RANGE_KEYS = ("start", "stop", "num", "step")
 
 def _scalar(p: Param, value: Any, where: str) -> Any:
     """``value`` as the parameter's type (ints accepted for floats)."""
+    if p.convert is not None:
+        value = p.convert(value)
     if isinstance(value, np.generic):
         value = value.item()
     if p.type is str:
@@ -133,19 +135,25 @@ class Grid:
         types = {p.name: p.type for p in self.kind.params}
         for (name, values), at in zip(self.dims.items(), unravelled, strict=True):
             if types[name] is str:
+                shown = [self._shown(self.kind.param(name), v) for v in values]
                 cols[name] = pl.Series(
-                    name, np.asarray(values, dtype=object)[at].tolist(), dtype=pl.String
+                    name, np.asarray(shown, dtype=object)[at].tolist(), dtype=pl.String
                 )
             else:
                 cols[name] = pl.Series(name, np.asarray(values)[at])
         frame = pl.DataFrame(cols)
         dtype = {str: pl.String, int: pl.Int64, float: pl.Float64}
         rest = [
-            pl.lit(self.value(p), dtype=dtype[p.type]).alias(p.name)
+            pl.lit(self._shown(p, self.value(p)), dtype=dtype[p.type]).alias(p.name)
             for p in self.kind.params
             if p.name not in self.dims
         ]
         return frame.with_columns(rest).select(["point"] + self.columns())
+
+    @staticmethod
+    def _shown(p: Param, value: Any) -> Any:
+        """What the input column holds of a stored value."""
+        return value if p.show is None or value is None else p.show(value)
 
 
 def grid_hash(spec: Mapping[str, Any]) -> str:

@@ -13,7 +13,10 @@ rejects) is a row with its error and null outputs, never an exception.
 * ``spindle``: the coupled steady state of a spindle
   ([`Spindle.thermal_state`][thermobear.Spindle.thermal_state]);
 * ``gear``: the motion regime of the gear system at a speed
-  ([`thermobear.regime_map`][thermobear.regime_map] of one cell).
+  ([`thermobear.regime_map`][thermobear.regime_map] of one cell);
+* ``prediction``: a calibrated model's outputs at a condition and a sample
+  of its calibrated values (defined, and registered with
+  ``register_kind``, by ``thermobear.predict.engine``).
 """
 
 from __future__ import annotations
@@ -43,6 +46,13 @@ class Param:
     per_point: bool = False
     #: Checks a value (raises ConfigError), e.g. a preset name.
     check: Optional[Callable[[Any], None]] = None
+    #: Turns a given value into the one the study stores and hashes (e.g. a
+    #: calibrated model, or the path of its file, into its JSON text); given
+    #: that stored value again it returns it unchanged.
+    convert: Optional[Callable[[Any], Any]] = None
+    #: What the input column shows of a stored value (e.g. a short hash of
+    #: a model's JSON text instead of the text in every row).
+    show: Optional[Callable[[Any], Any]] = None
 
 
 @dataclass(frozen=True)
@@ -555,6 +565,13 @@ GEAR = Kind(
 )
 
 KINDS: dict[str, Kind] = {k.name: k for k in (BEARING, THERMAL, SPINDLE, GEAR)}
+
+
+def register_kind(kind: Kind) -> None:
+    """Add a kind of point defined by a higher layer (the ``prediction``
+    kind of ``thermobear.predict``: a calibrated model's outputs); a kind
+    of that name is replaced."""
+    KINDS[kind.name] = kind
 
 
 def kind_of(name: str) -> Kind:

@@ -18,7 +18,7 @@ from .kinds import kind_of
 from .store import FORMAT, Store
 
 #: Points per chunk by kind: a chunk is about 0.1 .. 1 s of work on one core.
-DEFAULT_CHUNK = {"bearing": 20000, "thermal": 500, "spindle": 8, "gear": 8}
+DEFAULT_CHUNK = {"bearing": 20000, "thermal": 500, "spindle": 8, "gear": 8, "prediction": 500}
 
 
 def _count(n: int, noun: str) -> str:
@@ -60,8 +60,9 @@ class RunReport:
 
 class Study:
     """A design study: points of one ``kind`` (``"bearing"``, ``"thermal"``,
-    ``"spindle"``, ``"gear"``; see [`thermobear.study.kinds_table`][thermobear.study.kinds_table]
-    for each kind's inputs) over a ``grid`` (input name -> a list, array,
+    ``"spindle"``, ``"gear"``, ``"prediction"``; see
+    [`thermobear.study.kinds_table`][thermobear.study.kinds_table] for each kind's inputs)
+    over a ``grid`` (input name -> a list, array,
     ``range`` or a range ``{"start", "stop", "num"}`` /
     ``{"start", "stop", "step"}``; the Cartesian product, first dimension
     outermost) with the other inputs ``fixed`` (or at their defaults).

@@ -38,33 +38,24 @@ def thermal_state_many(
     progress: Any = None,
     **heat: Any,
 ) -> polars.DataFrame:
-    """[`thermal_state`][thermobear.thermal_state] of a bearing at many operating
-    points in one native call (rayon threads, GIL released, Ctrl-C within
-    50 ms), each point exactly as the single call computes it.
-
-    ``points``: a polars DataFrame (or mapping of columns) with any of
-    ``speed_rpm``, ``axial_n``, ``radial_n`` (absent: 0); other columns are
-    carried through. Model options (the heat model's included) as in
-    [`thermal_state`][thermobear.thermal_state], shared by every point; ``threads`` (default: all
-    cores), ``progress(done, total)``.
+    """[`thermal_state`][thermobear.thermal_state] at many operating points in one native call
+    (rayon threads, GIL released, Ctrl-C within 50 ms), each point as the single call computes it.
+    ``points``: a polars DataFrame (or mapping of columns) with any of ``speed_rpm``, ``axial_n``,
+    ``radial_n`` (absent: 0); other columns are carried through. Model options (the heat model's
+    included) as in [`thermal_state`][thermobear.thermal_state], shared by every point; ``threads``
+    (default: all cores), ``progress(done, total)``.
 
     Returns the input columns followed by the bearing outputs of
     [`solve_many`][thermobear.Bearing.solve_many] at the converged temperatures,
-    ``shaft_temperature_c``, ``inner_ring_temperature_c``,
-    ``ball_temperature_c``, ``outer_ring_temperature_c``,
-    ``housing_temperature_c``, ``oil_temperature_c``, ``viscosity_cst``,
-    ``heat_w`` (total), ``load_heat_w``, ``viscous_heat_w``, ``spin_heat_w``,
+    ``shaft_temperature_c``, ``inner_ring_temperature_c``, ``ball_temperature_c``,
+    ``outer_ring_temperature_c``, ``housing_temperature_c``, ``oil_temperature_c``,
+    ``viscosity_cst``, ``heat_w`` (total), ``load_heat_w``, ``viscous_heat_w``, ``spin_heat_w``,
     ``churning_heat_w``, ``radial_thermal_offset_um``, ``axial_thermal_offset_um``,
     ``ball_growth_um``, ``centrifugal_expansion_um``, ``thermal_residual_k``,
-    ``thermal_iterations``, then ``ok``, ``error_kind``, ``error``: a point
-    that runs away (``ThermalRunawayError``) or does not converge is a row
-    with its error and null outputs; nothing is raised for it.
-
-    The same as the method ``thermobear.Bearing.thermal_state_many``.
-    Any object with a ``_thermal_state_many(points, **options)`` method (a
-    [`Spindle`][thermobear.Spindle]: ``thermobear.Spindle.thermal_state_many``)
-    is dispatched to it with ``points``, the options that were given and
-    the remaining keyword arguments."""
+    ``thermal_iterations``, then ``ok``, ``error_kind``, ``error``: a point that runs away
+    (``ThermalRunawayError``) or does not converge is a row with its error and null outputs;
+    nothing is raised for it. The same as the method ``thermobear.Bearing.thermal_state_many``; a
+    [`Spindle`][thermobear.Spindle] goes to ``thermobear.Spindle.thermal_state_many``."""
     from ..bearing.batch import join_inputs, operating_frame, result_frame
     from ..errors import ConfigError
 
@@ -73,8 +64,7 @@ def thermal_state_many(
                  "heat_model": None if heat_model == "palmgren" else heat_model,
                  "lubrication_factor_f0": lubrication_factor_f0,
                  "churning_oil_fraction": churning_oil_fraction, "progress": progress}  # fmt: skip
-        given = {k: v for k, v in given.items() if v is not None}
-        return bearing._thermal_state_many(points, **given, **heat)
+        return _other_model(bearing, points, given, heat)
     if not isinstance(bearing, Bearing):
         raise ConfigError(f"invalid bearing = {bearing!r}: give a thermobear.Bearing")
     names = ("speed_rpm", "axial_n", "radial_n")
@@ -104,6 +94,14 @@ def thermal_state_many(
         progress=progress,
     )
     return join_inputs(frame, result_frame(raw))
+
+
+def _other_model(model: Any, points: Any, given: dict[str, Any], heat: dict[str, Any]) -> Any:
+    """``thermal_state_many`` of another model kind: any object with a
+    ``_thermal_state_many(points, **options)`` method gets ``points``, the
+    options that were given (not None) and the remaining keyword arguments."""
+    given = {k: v for k, v in given.items() if v is not None}
+    return model._thermal_state_many(points, **given, **heat)
 
 
 register_task("thermal_state_many", thermal_state_many)

@@ -21,6 +21,7 @@ import numpy as np
 
 from .. import _native
 from .._deprecation import renamed_kwargs, warn_renamed
+from .._model_hook import takes_calibrated
 from .._names import BEARING_NODES, BEARING_SYMBOLS
 from .._types import HeatModel, Lubrication, RacewayControl
 from ..bearing.ball_bearing import Bearing, BearingSolution, _effects_arg, register_task
@@ -301,6 +302,7 @@ def lubrication_defaults(
 
 
 @renamed_kwargs(spin_friction="spin_friction_coefficient")
+@takes_calibrated(lambda given: HEAT_MODEL_OPTIONS)
 def thermal_state(
     bearing: Any,
     speed_rpm: float,
@@ -354,7 +356,8 @@ def thermal_state(
     Any object with a ``_thermal_state(**kwargs)`` method (a
     [`Spindle`][thermobear.Spindle]) is dispatched to it with ``speed_rpm``, the
     loads and ``effects`` that were given, and the remaining keyword
-    arguments (for a spindle: ``preload_n``, ``preload_kind``)."""
+    arguments (for a spindle: ``preload_n``, ``preload_kind``). A calibrated
+    model ([`CalibratedModel`][thermobear.CalibratedModel]) stands for its machine."""
     if hasattr(bearing, "_thermal_state") and not isinstance(bearing, Bearing):
         given = {"axial_n": axial_n, "radial_n": radial_n, "effects": effects,
                  "lubrication": lubrication,

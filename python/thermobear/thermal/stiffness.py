@@ -14,18 +14,36 @@ from numpy.typing import ArrayLike
 
 from .. import _native
 from .._deprecation import renamed_kwargs
+from .._model_hook import takes_calibrated
 from .._names import renamed_columns
 from .._partial import speed_frames
 from .._types import RacewayControl, StiffnessMode
 from ..bearing.ball_bearing import Bearing, _effects_arg
 from ..errors import ConfigError, ThermobearError
-from .state import DEFAULT_SPIN_FRICTION_COEFFICIENT, _model_kwargs
+from .state import DEFAULT_SPIN_FRICTION_COEFFICIENT, HEAT_MODEL_OPTIONS, _model_kwargs
 
 if TYPE_CHECKING:
     import polars
 
 
+#: The thermal options of the thermal mode (``thermal_stiffness_curve``'s
+#: keywords beyond the loads, effects and raceway settings).
+THERMAL_OPTIONS = (
+    "lubricant", "lubrication_factor_f0", "spin_friction_coefficient", "oil_air_temperature_c",
+    "ambient_temperature_c", "housing_material", "extra_heat_w", "housing_conductance_scale",
+    "churning_oil_fraction", *HEAT_MODEL_OPTIONS,
+)  # fmt: skip
+
+
+def _thermal_option_names(given: dict[str, Any]) -> tuple[str, ...]:
+    """The calibrated options a ``stiffness_curve`` call takes beyond its
+    named parameters: the thermal options in the thermal mode, none in the
+    others (they do not act there)."""
+    return THERMAL_OPTIONS if given.get("mode") == "thermal" else ()
+
+
 @renamed_kwargs(moment_nmm=("moment_n_m", lambda v: float(v) / 1000.0))
+@takes_calibrated(_thermal_option_names)
 def stiffness_curve(
     bearing: Bearing,
     speeds_rpm: ArrayLike,
@@ -61,10 +79,10 @@ def stiffness_curve(
     falls much less with speed than ``k_xx``); ``radial_displacement_um``,
     ``axial_displacement_um``, ``tilt_rad``; extreme contact angles in
     degrees and loads in N. ``moment_n_m`` is in N m (the older
-    ``moment_nmm`` in N mm is deprecated and converted).
+    ``moment_nmm`` in N mm is deprecated and converted). A
+    [`CalibratedModel`][thermobear.CalibratedModel] stands for its bearing
+    (its thermal options act in the thermal mode only).
     """
-    import polars as pl
-
     if mode not in ("speed", "constant", "thermal"):
         raise ConfigError(f'invalid mode = {mode!r}: must be "speed", "constant" or "thermal"')
     if mode == "thermal":
@@ -89,6 +107,33 @@ def stiffness_curve(
             f"invalid argument = {sorted(thermal_options)[0]!r}: "
             "only the thermal mode takes thermal options"
         )
+    return _mechanical_stiffness_curve(
+        bearing,
+        speeds_rpm,
+        (float(axial_n), float(radial_n), float(moment_n_m)),
+        mode,
+        effects,
+        raceway_control,
+        misalignment_rad,
+        progress,
+    )
+
+
+def _mechanical_stiffness_curve(
+    bearing: Bearing,
+    speeds_rpm: ArrayLike,
+    loads: tuple[float, float, float],
+    mode: StiffnessMode,
+    effects: Optional[Sequence[str]],
+    raceway_control: RacewayControl,
+    misalignment_rad: Optional[float],
+    progress: Optional[Callable[[int, int], None]],
+) -> polars.DataFrame:
+    """The speed and constant modes of ``stiffness_curve``: the native sweep
+    (``loads``: axial N, radial N, moment N m), its columns renamed; a speed
+    that fails keeps the finished rows on the error."""
+    import polars as pl
+
     speeds = np.ascontiguousarray(np.asarray(speeds_rpm, dtype=float).ravel())
     if speeds.size == 0:
         raise ConfigError("invalid speeds_rpm = []: give at least one speed")
@@ -103,9 +148,7 @@ def stiffness_curve(
         cols = _native.stiffness_curve(
             bearing._b,
             native_speeds,
-            float(axial_n),
-            float(radial_n),
-            float(moment_n_m),
+            *loads,
             _effects_arg(effects),
             raceway_control,
             None if misalignment_rad is None else float(misalignment_rad),

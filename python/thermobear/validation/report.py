@@ -67,11 +67,16 @@ def _section(r: SetResult, fig: Path) -> list[str]:
             f"- calibrated {c['name']} = {c['value']:.4g} {c['unit']} "
             f"(bounds {c['lower']:.4g}..{c['upper']:.4g})"
         )
-    lines += [f"- held-out error after calibration: worst {r.heldout_max_sigma_after:.3g} sigma"]
+    lines += [
+        f"- held-out error, calibrated without the held-out points: worst "
+        f"{r.heldout_max_sigma_after:.3g} sigma"
+    ]
+    lines += [f"  - under {k}: {v:.3g} sigma" for k, v in r.heldout_by_explanation.items()]
     if r.missing:
         lines += [f"- what is missing: {r.missing}"]
     lines += ["", f"![{r.name}]({fig.name})", ""]
-    cols = [c for c in ("label", "value", "sigma", "model_before", "model_after", "heldout")]
+    names = ("label", "origin", "value", "sigma", "model_before", "model_after", "heldout")
+    cols = [c for c in names if c in r.points.columns]
     lines += _md_table(r.points.select(cols)) + [""]
     for name, t in r.tables.items():
         if t is not None and t.height:

@@ -11,12 +11,17 @@ class SetResult:
     """One validation set against thermobear's models.
 
     ``points``: polars frame, one row per published point (``label``,
-    ``quantity``, ``value``, ``sigma``, ``model_before``, ``model_after``,
-    ``heldout``: not used for calibration); ``verdict``: the diagnosis'
-    verdict (or why none was run); ``calibrated``: dicts ``name, value,
-    lower, upper, unit``; ``missing``: a plain statement of what the models
-    lack when the set does not pass (empty when it passes); ``tables``:
-    further named frames for the report; ``notes``: lines for the report."""
+    ``quantity``, ``value``, ``sigma``, ``model_before``, ``model_after``:
+    the model calibrated on the points not held out only, ``heldout``: not
+    used for calibration, and where the set states it ``origin``: measured
+    or simulated); ``verdict``: the diagnosis' verdict (or why none was
+    run); ``calibrated``: dicts ``name, value, lower, upper, unit``;
+    ``missing``: a plain statement of what the models lack when the set does
+    not pass (empty when it passes); ``tables``: further named frames for
+    the report; ``notes``: lines for the report; ``heldout_by_explanation``:
+    when the verdict names more than one explanation (a tie, "unresolved"),
+    the worst held-out |model - value| / sigma under each, every one
+    calibrated without the held-out points."""
 
     name: str
     title: str
@@ -29,6 +34,7 @@ class SetResult:
     tables: dict = field(default_factory=dict)
     notes: list = field(default_factory=list)
     seconds: float = 0.0
+    heldout_by_explanation: dict = field(default_factory=dict)
 
     def _z(self, col: str, held: bool) -> Any:
         import numpy as np
@@ -44,8 +50,11 @@ class SetResult:
 
     @property
     def heldout_max_sigma_after(self) -> float:
-        """Largest |model - value| / sigma after calibration on the held-out
-        points (NaN without held-out points)."""
+        """Largest |model - value| / sigma on the held-out points of the
+        model calibrated without them (NaN without held-out points); under
+        several explanations, the worst of them."""
+        if self.heldout_by_explanation:
+            return float(max(self.heldout_by_explanation.values()))
         z = self._z("model_after", True)
         return float(z.max()) if z.size else float("nan")
 
@@ -67,9 +76,12 @@ class SetResult:
         lines = [
             f"{self.name}: {'passes' if self.passes else 'does not pass'} ({self.title})",
             f"  {self.points.height} points; baseline max |model - value| / sigma "
-            f"{self.baseline_max_sigma:.3g}; held-out after calibration "
+            f"{self.baseline_max_sigma:.3g}; held-out, calibrated without them, "
             f"{self.heldout_max_sigma_after:.3g}",
             f"  verdict: {self.verdict}",
+        ]
+        lines += [
+            f"  held-out under {k}: {v:.3g} sigma" for k, v in self.heldout_by_explanation.items()
         ]
         for c in self.calibrated:
             lines.append(
