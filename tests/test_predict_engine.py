@@ -18,6 +18,7 @@ from polars.testing import assert_frame_equal
 import thermobear as tb
 from thermobear import diagnosis as D
 from thermobear.diagnosis.calibrated import CalibratedModel, _Step
+from thermobear.predict.uncertainty import parameters_of, sobol_points
 
 NAMES = ("lubrication_factor_f0", "extra_heat_w")
 COND = {"speeds_rpm": [3000.0, 9000.0, 15000.0], "axial_n": [300.0, 600.0]}
@@ -137,3 +138,99 @@ def test_bad_points_are_error_rows_and_bad_inputs_name_the_field(model, tmp_path
 def test_a_prediction_study_without_a_model_says_so():
     df = tb.Study("prediction", {"speed_rpm": [1000.0]}).run(progress=False)
     assert not df["ok"][0] and "model" in df["error"][0]
+
+
+# -- gear regimes on the study engine ------------------------------------------------
+
+REGIME_SPEEDS_RPM = np.linspace(9000.0, 16000.0, 15)
+REGIME_ARGS = dict(gear_options={"torque_n_m": 20.0, "te_amplitude_um": 5.0}, samples=8, seed=0)
+
+
+@pytest.fixture(scope="module")
+def hot_bearing() -> CalibratedModel:
+    """A 6208 whose extra friction heat (20 +- 10 W) moves its thermal
+    stiffness and so where the seed gear pair leaves chaos."""
+    base = D.BearingModelSpec(tb.Bearing.preset("6208"))
+    step = _Step("extra_heat_w", {c.name: c for c in base.candidate_list()}["extra_heat_w"])
+    return CalibratedModel("calibration", "", base, [step], [20.0], [[100.0]])
+
+
+def _regimes(model, **kw) -> pl.DataFrame:
+    cond = {"speeds_rpm": REGIME_SPEEDS_RPM}
+    return tb.predict(model, "regimes", cond, **REGIME_ARGS, **kw)
+
+
+@pytest.fixture(scope="module")
+def regimes_here(hot_bearing) -> pl.DataFrame:
+    return _regimes(hot_bearing)
+
+
+def test_regimes_on_the_local_engine_equal_the_in_process_ones(hot_bearing, regimes_here):
+    there = _regimes(hot_bearing, engine="local")
+    assert_frame_equal(there, regimes_here)
+    assert_frame_equal(tb.regime_boundaries(there), tb.regime_boundaries(regimes_here))
+    # the samples disagree somewhere: the test compares real probabilities
+    p = regimes_here.filter(pl.col("quantity") == "regime_probability")
+    assert ((p["value"] > 0.0) & (p["value"] < 1.0)).any()
+    assert tb.regime_boundaries(regimes_here).height >= 2
+
+
+def test_regimes_on_a_dask_cluster_equal_the_in_process_ones(hot_bearing, regimes_here):
+    distributed = pytest.importorskip("dask.distributed")
+    with distributed.LocalCluster(
+        n_workers=1, processes=False, threads_per_worker=2, dashboard_address=":0"
+    ) as cluster:
+        with distributed.Client(cluster) as client:
+            there = _regimes(hot_bearing, engine=client)
+    assert_frame_equal(there, regimes_here)
+
+
+def test_a_regime_prediction_study_sweeps_one_sample_per_chunk(hot_bearing):
+    """A point is the regime at one speed of the sample's whole sweep: sample
+    0 (the estimate) is the plain down sweep of the calibrated model."""
+    order = REGIME_SPEEDS_RPM[::-1]
+    opts = REGIME_ARGS["gear_options"]
+    fixed = {"model": hot_bearing, "gear_options": opts, "speeds_rpm": order}
+    s = tb.Study("regime_prediction", {"sample": [0], "speed_rpm": order}, fixed)
+    df = s.run(progress=False)
+    assert df["ok"].all() and df["gear"][0] == "seed-electric-drive"
+    gear = tb.GearPair.preset("seed-electric-drive")
+    system = tb.GearSystem(gear, bearings=hot_bearing, stiffness="thermal", **opts)
+    plain = tb.bifurcation(system, REGIME_SPEEDS_RPM, direction="down")
+    want = plain.unique("speed_rpm", keep="first", maintain_order=True)
+    assert df["regime"].to_list() == want["regime"].to_list()
+    # a speed outside the sweep is an error row; an unknown gear pair is refused
+    odd = tb.Study("regime_prediction", {"speed_rpm": [order[0], 9100.0]}, fixed)
+    assert odd.run(progress=False)["ok"].to_list() == [True, False]
+    with pytest.raises(tb.ConfigError, match="gear = 'no-such-pair'"):
+        tb.Study("regime_prediction", {}, {**fixed, "gear": "no-such-pair"})
+
+
+@pytest.mark.parametrize("engine", [None, "local"])
+def test_a_failing_regime_sample_is_left_out_and_counted(hot_bearing, monkeypatch, engine):
+    """The gear system of the hottest sample fails: of 16 samples (1 in 16
+    fails) it is left out of the shares; of 8 (1 in 8, over 10 %) the
+    prediction is refused, naming the count."""
+    from thermobear.predict import sweeps
+
+    real, hottest = sweeps.regime_system, {}
+
+    def failing(model, theta, gear, options):
+        if len(theta) and theta[0] >= hottest["w"]:
+            raise tb.ConvergenceError("thermal stiffness did not converge")
+        return real(model, theta, gear, options)
+
+    monkeypatch.setattr(sweeps, "regime_system", failing)
+    cond = {"speeds_rpm": REGIME_SPEEDS_RPM[::2]}
+    opts = {"gear_options": REGIME_ARGS["gear_options"], "seed": 0, "engine": engine}
+    for samples in (16, 8):
+        hottest["w"] = sobol_points(parameters_of(hot_bearing), samples, 0)[:, 0].max()
+        if samples == 8:
+            with pytest.raises(tb.ThermobearError, match="failed at 1 of 8 samples"):
+                tb.predict(hot_bearing, "regimes", cond, samples=samples, **opts)
+            continue
+        p = tb.predict(hot_bearing, "regimes", cond, samples=samples, **opts).filter(
+            pl.col("quantity") == "regime_probability"
+        )
+        k = p["value"].to_numpy() * 15.0  # shares of the 15 samples left
+        assert np.allclose(k, np.round(k)) and not np.allclose(k, np.round(k * 16 / 15) * 15 / 16)

@@ -318,7 +318,8 @@ def test_grid_values_ranges_and_errors():
     with pytest.raises(tb.ConfigError, match="kind = 'rotor'"):
         tb.Study("rotor", {})
     table = kinds_table()
-    assert {"bearing", "thermal", "spindle", "gear", "prediction"} == set(table["kind"])
+    kinds = {"bearing", "thermal", "spindle", "gear", "prediction", "regime_prediction"}
+    assert kinds == set(table["kind"])
 
 
 @pytest.mark.parametrize(
@@ -390,3 +391,103 @@ def test_without_dask_the_engine_names_the_extra(monkeypatch):
     with pytest.raises(tb.ConfigError, match=r'pip install "thermobear\[dask\]"'):
         s.run(engine="tcp://127.0.0.1:8786", progress=False)
     assert s.run(progress=False).height == 1  # the local engine needs no Dask
+
+
+# -- a calibrated model in place of a preset ------------------------------------------
+
+
+def _calibrated(spec) -> tb.CalibratedModel:
+    """A model at a spec's settings (no calibrated values: cheap to build)."""
+    return tb.CalibratedModel("nothing", "baseline", spec, [], [], np.zeros((0, 0)))
+
+
+def _bearing_model(preset: str = "7008C", oil_fraction: float = 0.01) -> tb.CalibratedModel:
+    """A bearing with a churning loss and a 10 % axial load scale."""
+    spec = tb.BearingModelSpec(tb.Bearing.preset(preset))
+    return _calibrated(spec.with_setting(churning_oil_fraction=oil_fraction, axial_load_scale=1.1))
+
+
+def test_a_thermal_study_of_a_calibrated_model_is_its_thermal_state():
+    m = _bearing_model()
+    speeds = [6000.0, 12000.0]
+    df = tb.Study("thermal", {"speed_rpm": speeds}, {"model": m, "axial_n": 300.0}).run(
+        progress=False
+    )
+    nodes = ("shaft", "inner_ring", "ball", "outer_ring", "housing")
+    for i, s in enumerate(speeds):
+        st = tb.thermal_state(m, s, 300.0, 0.0)  # the load scale and oil fraction act
+        for n in nodes:
+            assert df[f"{n}_temperature_c"][i] == st.temperature_c(n), n
+        assert df["heat_w"][i] == st.total_heat_w and df["churning_heat_w"][i] > 0.0
+    preset = tb.Study("thermal", {"speed_rpm": speeds}, {"axial_n": 300.0}).run(progress=False)
+    assert (preset["churning_heat_w"] == 0.0).all()
+    assert df["model"][0] == df["model"][1] != preset["model"][0] == ""
+    # A setting off its default must agree with the calibrated one: the
+    # point that contradicts it is its own error row, naming both values.
+    rows = tb.Study(
+        "thermal",
+        {"churning_oil_fraction": [0.01, 0.0]},
+        {"model": m, "speed_rpm": 6000.0, "axial_n": 300.0},
+    ).run(progress=False)
+    assert rows["ok"].to_list() == [True, False] and rows["error_kind"][1] == "ConfigError"
+    assert "churning_oil_fraction = 0.0" in rows["error"][1] and "= 0.01" in rows["error"][1]
+    assert rows["outer_ring_temperature_c"][0] == df["outer_ring_temperature_c"][0]
+    other = tb.Study("thermal", {"speed_rpm": [6000.0]}, {"model": m, "bearing": "6208"})
+    assert "bearing = '6208'" in other.run(progress=False)["error"][0]
+
+
+def test_the_grid_hash_follows_the_model_and_a_worker_rebuilds_it(tmp_path):
+    from thermobear.study import models
+    from thermobear.study.engine import compute, compute_on_worker
+
+    m = _bearing_model()
+    path = m.save(tmp_path / "model.json")
+
+    def study(model) -> tb.Study:
+        return tb.Study("thermal", {"speed_rpm": [6000.0, 9000.0]}, {"model": model})
+
+    same = {study(x).grid_hash for x in (m, path, str(path), m.to_json())}
+    assert len(same) == 1
+    assert study(_bearing_model(oil_fraction=0.02)).grid_hash not in same
+    assert tb.Study("thermal", {"speed_rpm": [6000.0, 9000.0]}).grid_hash not in same
+    s = study(m)
+    spec = json.loads(json.dumps(s.grid.spec()))
+    local = compute(s.grid, s.chunk_size, 0, 1)
+    models._MODELS.clear()  # a fresh worker: the model comes from the description
+    assert_frame_equal(compute_on_worker(spec, s.chunk_size, 0), local)
+    assert local["ok"].all()
+
+
+def test_a_spindle_study_of_a_calibrated_model_is_its_thermal_state():
+    sp = tb.Spindle.preset("seed-ceramic-spindle")
+    spec = tb.SpindleModelSpec.of_model(sp).with_setting(spin_friction_coefficient=0.08)
+    m = _calibrated(spec.with_setting(preload_scale=0.9))
+    speeds = [9000.0, 12000.0]
+    df = tb.Study("spindle", {"speed_rpm": speeds}, {"model": m, "preload_n": 250.0}).run(
+        progress=False
+    )
+    col = "front_outer_ring_temperature_c"
+    for i, s in enumerate(speeds):
+        st = tb.thermal_state(m, s, preload_n=250.0)
+        for c in (col, "operating_preload_n", "k_xx_n_per_m", "axial_growth_um"):
+            assert df[c][i] == st[c][0], c
+        assert df[col][i] != sp.thermal_state(s, preload_n=250.0)[col][0]
+    wrong = tb.Study("spindle", {"speed_rpm": [9000.0]}, {"model": _bearing_model()})
+    assert "a spindle point takes a model of a spindle" in wrong.run(progress=False)["error"][0]
+
+
+def test_a_gear_point_of_a_calibrated_model_has_its_thermal_support():
+    m = _bearing_model("6208")
+    fixed = {"model": m, "torque_n_m": 100.0, "transient_periods": 60, "record_periods": 20}
+    g = tb.Study("gear", {"speed_rpm": [3000.0]}, fixed).run(progress=False)
+    gear = tb.GearPair.preset("seed-electric-drive")
+    system = tb.GearSystem(gear, bearings=m, stiffness="thermal", torque_n_m=100.0)
+    cell = tb.regime_map(system, [100.0], [3000.0], [1.0], 60, 20)
+    assert g["ok"][0] and g["regime"][0] == cell["regime"][0]
+    assert g["amplitude_um"][0] == cell["amplitude_um"][0]
+    assert g["mean_dte_um"][0] == cell["mean_dte_um"][0]
+    plain = tb.regime_map(tb.GearSystem(gear, torque_n_m=100.0), [100.0], [3000.0], [1.0], 60, 20)
+    assert g["mean_dte_um"][0] != plain["mean_dte_um"][0]  # another support
+    constant = tb.Study("gear", {"speed_rpm": [3000.0]}, {**fixed, "stiffness": "constant"})
+    err = constant.run(progress=False)["error"][0]
+    assert "stiffness = 'constant'" in err and "stiffness = 'thermal'" in err

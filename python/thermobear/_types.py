@@ -57,7 +57,7 @@ EffectKind = Literal["switch", "term", "model"]
 PreloadKind = Literal["rigid", "spring"]
 
 #: The kinds of design study.
-StudyKind = Literal["bearing", "thermal", "spindle", "gear", "prediction"]
+StudyKind = Literal["bearing", "thermal", "spindle", "gear", "prediction", "regime_prediction"]
 
 __all__ = [
     "BearingStiffnessPer",

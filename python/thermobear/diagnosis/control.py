@@ -129,31 +129,6 @@ def carrier_control(data, pred: np.ndarray, name: str, slope: np.ndarray) -> Gen
     return GenericControl(quantities, dbic, GENERIC_PARAMETERS, chi2, cols @ coef, label, name)
 
 
-def control_extrapolation(data, pred: np.ndarray, ctrl: GenericControl, slope, fit) -> np.ndarray:
-    """The shift (value units) of every row of ``data`` by the control of
-    the same kind and quantities as ``ctrl``, fitted by linear least
-    squares to the residual of ``pred`` on the rows of ``fit`` only (the
-    training points): a carrier control through the sensitivities
-    ``slope`` of its input, else one term per quantity of ``ctrl`` (none
-    for a quantity with fewer than two fitted rows)."""
-    x = _speed_fraction(data)
-    r = data.residual(pred)
-    basis = np.column_stack([x, x**2])
-    if ctrl.carrier and slope is not None:
-        cols = basis * np.asarray(slope)[:, None]
-        coef, *_ = np.linalg.lstsq(cols[fit] / data.s[fit, None], r[fit], rcond=None)
-        return cols @ coef
-    shift = np.zeros(data.n)
-    for q in ctrl.quantities:
-        rows = data.quantity == q
-        used = rows & fit
-        if used.sum() < GENERIC_PARAMETERS:
-            continue
-        coef, *_ = np.linalg.lstsq(basis[used] / data.s[used, None], r[used], rcond=None)
-        shift[rows] = basis[rows] @ coef
-    return shift
-
-
 def control_row(ctrl: GenericControl, chi_base: float) -> dict:
     """The control's row in the screening table (never passes: it is not a
     verdict)."""

@@ -5,9 +5,10 @@ The explanations: the accepted candidates together (or none: the
 baseline); under a tie, each member added alone to what was accepted
 before (and the generic control when it ties too); under "unresolved", the
 known effects the data cannot tell from an unknown one, and that unknown
-smooth term (the generic control). Each is calibrated on the training
-points only -- never on the held-out points -- and predicts every point:
-on a training point the "after" is a fit, on a held-out point an
+smooth term (the generic control: the posterior mean of the Gaussian-process
+discrepancy that ``thermobear.predict`` adds). Each is calibrated on the
+training points only -- never on the held-out points -- and predicts every
+point: on a training point the "after" is a fit, on a held-out point an
 extrapolation."""
 
 from __future__ import annotations
@@ -19,7 +20,8 @@ import numpy as np
 from .acceptance import joint_refit
 from .audit import gap_table
 from .candidates import Candidate
-from .control import GenericControl, control_extrapolation
+from .control import GenericControl
+from .discrepancy import discrepancy_at, fit_discrepancy
 from .measurements import MeasuredData
 from .screening import _curve, _fit
 from .setting import _predict, _Setting
@@ -69,14 +71,24 @@ def explanations(s: Any) -> list[tuple[str, Any]]:
 
 
 def _control_prediction(s: Any, ctrl: GenericControl, reference: Sequence[Candidate]) -> np.ndarray:
-    """The generic control fitted, on the training points only, to the
-    residual of the ``reference`` candidates (themselves calibrated without
-    the held-out points), and its prediction of every kept row."""
+    """The unknown smooth term on the residual of the ``reference``
+    candidates (themselves calibrated without the held-out points), and its
+    prediction of every kept row: the posterior mean of the model-discrepancy
+    term ``thermobear.predict`` adds (a Gaussian process in speed per
+    quantity, ``fit_discrepancy``) fitted on the training points only. A
+    quantity with too few training speeds for a term keeps the reference."""
     d = s.data
     ref = calibrated_without_heldout(s, reference, d)
     train = d.train if d.held.any() else np.ones(d.n, dtype=bool)
-    slope = s.carriers.get(ctrl.carrier) if ctrl.carrier else None
-    return ref + control_extrapolation(d, ref, ctrl, slope, train)
+    speeds = d.cond["speed_rpm"].to_numpy()
+    gp = fit_discrepancy(speeds[train], d.quantity[train], (d.y - ref)[train], d.s[train])
+    shift = np.zeros(d.n)
+    for q in gp["terms"]:
+        rows = d.quantity == q
+        got = discrepancy_at(gp, q, speeds[rows])
+        if got is not None:
+            shift[rows] = got[0]
+    return ref + shift
 
 
 def explained_predictions(s: Any) -> list[tuple[str, np.ndarray]]:

@@ -140,9 +140,10 @@ def predict(
     ``lower``, ``upper``, ``unit`` (of value and bounds), ``member`` (the
     explanation's label; "" for a single model) and ``method``.
 
-    ``engine``: None runs a sampled band's samples in this process;
-    ``"local"``, a Dask ``Client`` or a scheduler address runs them as a
-    [`Study`][thermobear.Study] (``thermobear.predict.engine``): the same band.
+    ``engine``: None runs a sampled band's samples (or the regimes' sweeps)
+    in this process; ``"local"``, a Dask ``Client`` or a scheduler address
+    runs them as a [`Study`][thermobear.Study] (``thermobear.predict.engine``):
+    the same band.
 
     ``what="regimes"``: the motion regimes of a gear pair on the calibrated
     bearings, sampled (``gear``, ``gear_options``, ``direction``,
@@ -155,7 +156,7 @@ def predict(
     lv = check_level(level)
     check_arguments(method, samples, engine)
     if what == "regimes":
-        run = (gear, gear_options, direction, sweep_options)
+        run = (gear, gear_options, direction, sweep_options, engine)
         return predict_regimes(cm, conditions, lv, method, int(samples), int(seed), *run)
     measured = measured_conditions(cm)
     cond = condition_frame(cm.spec, conditions, measured if measured is not None else (

@@ -18,10 +18,8 @@ solved on its own, so a point's outputs do not depend on the chunking."""
 
 from __future__ import annotations
 
-import hashlib
 import threading
-from pathlib import Path
-from typing import TYPE_CHECKING, Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Mapping, Optional, Sequence
 
 import numpy as np
 
@@ -31,71 +29,18 @@ from ..diagnosis.protocol import MODEL_KINDS
 from ..errors import ConfigError, ThermobearError
 from ..study import Study
 from ..study.kinds import Kind, Param, _grouped, _one_of, register_kind
+from ..study.models import model_of, model_shown, model_text
 from .conditions import WHATS, condition_columns, is_spindle, quantities_for
 from .uncertainty import parameters_of, sampled_quantiles, sobol_points
 
 if TYPE_CHECKING:
     import polars
 
-#: Models rebuilt in this process by the key of their JSON text (the first
-#: 16 hex digits of its SHA-256): (text, model). The latest ``_KEEP`` are kept.
-_MODELS: dict[str, tuple[str, CalibratedModel]] = {}
 _KEEP = 64
 _LOCK = threading.Lock()  # a Dask worker runs tasks in several threads
 
-#: Sobol points by (model key, member, samples, seed).
+#: Sobol points by (model key, member, samples, seed); the latest ``_KEEP``.
 _POINTS: dict[tuple[str, str, int, int], np.ndarray] = {}
-
-
-def model_key(text: str) -> str:
-    """The short key of a model's JSON text (what its column shows)."""
-    return hashlib.sha256(text.encode()).hexdigest()[:16]
-
-
-def _remember(text: str, model: CalibratedModel) -> str:
-    key = model_key(text)
-    with _LOCK:
-        if len(_MODELS) >= _KEEP and key not in _MODELS:
-            _MODELS.pop(next(iter(_MODELS)))
-        _MODELS[key] = (text, model)
-    return text
-
-
-def model_text(value: Any) -> str:
-    """The stored form of a ``model`` input: a calibrated model (or a
-    [`Calibration`][thermobear.Calibration] / [`Diagnosis`][thermobear.Diagnosis]
-    by its model), the path of a saved model or its JSON text -> the
-    model's canonical JSON text."""
-    inner = getattr(value, "model", None)
-    if not hasattr(value, "to_json") and hasattr(inner, "to_json"):
-        value = inner
-    if hasattr(value, "to_json"):
-        text = value.to_json()
-        return (
-            text if model_key(text) in _MODELS else _remember(text, CalibratedModel.from_json(text))
-        )
-    if isinstance(value, Path) or (isinstance(value, str) and not value.lstrip().startswith("{")):
-        try:
-            raw = Path(value).read_text()
-        except OSError as e:
-            raise ConfigError(f"invalid model = {str(value)!r}: cannot read: {e}") from None
-    elif isinstance(value, str):
-        raw = value
-    else:
-        raise ConfigError(
-            f"invalid model = {type(value).__name__}: give a calibrated model, the path of its "
-            "saved file or its JSON text"
-        )
-    if model_key(raw) in _MODELS:
-        return raw
-    model = CalibratedModel.from_json(raw)
-    return _remember(model.to_json(), model)
-
-
-def _model_of(key: str) -> CalibratedModel:
-    if key not in _MODELS:
-        raise ConfigError(f"invalid model = {key!r}: not a model of this study")
-    return _MODELS[key][1]
 
 
 def _member_of(model: CalibratedModel, member: str) -> CalibratedModel:
@@ -151,7 +96,7 @@ def _run_prediction(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
     def solve(keys: dict, rows: Any) -> Any:
         if not keys["model"]:
             raise ConfigError("invalid model = '': a prediction study needs a model")
-        cm = _member_of(_model_of(keys["model"]), keys["member"])
+        cm = _member_of(model_of(keys["model"]), keys["member"])
         at = (keys["model"], keys["member"], keys["samples"], keys["seed"])
         theta = sample_values(cm, at, keys["sample"])
         spec = cm.spec_at(theta) if theta.size else cm.spec
@@ -185,7 +130,7 @@ PREDICTION = Kind(
             "",
             "calibrated model: the object, its saved JSON file or text (column: SHA-256 key)",
             convert=model_text,
-            show=lambda text: model_key(str(text)) if text else "",
+            show=model_shown,
         ),
         Param("member", str, "", "member (explanation) label of a tie; '' the model itself"),
         Param("what", str, "measured", "quantities, as predict's", check=_one_of("what", *WHATS)),
@@ -202,6 +147,128 @@ PREDICTION = Kind(
 )  # fmt: skip
 
 register_kind(PREDICTION)
+
+
+# -- gear regimes of a sample: the regime_prediction kind ------------------------
+
+
+def _canonical(value: Any, name: str) -> str:
+    """A JSON-able mapping (arrays as lists) or its JSON text -> canonical JSON text."""
+    import json
+
+    try:
+        raw = json.loads(value) if isinstance(value, str) else value
+        if isinstance(raw, Mapping):
+            raw = {str(k): np.asarray(v).tolist() if np.ndim(v) else v for k, v in raw.items()}
+        elif isinstance(raw, (list, tuple, np.ndarray)):
+            raw = [float(v) for v in np.asarray(raw, dtype=float).ravel()]
+        return json.dumps(raw, sort_keys=True, allow_nan=False)
+    except (TypeError, ValueError) as e:
+        raise ConfigError(f"invalid {name} = {value!r}: not JSON-able ({e})") from None
+
+
+#: Gear pairs' saved JSON texts by their key (what the ``gear`` column shows).
+_GEARS: dict[str, str] = {}
+
+
+def gear_text(value: Any) -> str:
+    """A gear pair input: a preset name as it is, a ``GearPair`` (or its
+    saved JSON text) as the JSON text of its saved state, remembered by
+    its key."""
+    import json
+
+    if isinstance(value, str) and not value.lstrip().startswith("{"):
+        return value
+    native = getattr(value, "_g", None)
+    if native is None and not isinstance(value, str):
+        raise ConfigError(f"invalid gear = {value!r}: a thermobear.GearPair or a preset name")
+    text = value if native is None else json.dumps(native.__reduce__()[1][0], sort_keys=True)
+    with _LOCK:
+        _GEARS[model_shown(text)] = text
+    return text
+
+
+def _check_gear(text: Any) -> None:
+    from ..gear import GearPair
+
+    if not str(text).lstrip().startswith("{") and text not in GearPair.preset_names():
+        known = ", ".join(GearPair.preset_names())
+        raise ConfigError(f"invalid gear = {text!r}: unknown; known: {known}")
+
+
+def gear_of(shown: str) -> Any:
+    """The ``GearPair`` of a ``gear`` column value (a preset name or the
+    key of a remembered saved state)."""
+    import json
+
+    from .. import _native
+    from ..gear import GearPair
+
+    if shown in _GEARS:
+        return GearPair(_native._restore(json.loads(_GEARS[shown])))
+    return GearPair.preset(shown)
+
+
+def _run_regimes(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
+    import json
+
+    import polars as pl
+
+    from . import sweeps
+
+    def solve(keys: dict, rows: Any) -> Any:
+        if not keys["model"]:
+            raise ConfigError("invalid model = '': a regime_prediction study needs a model")
+        cm = _member_of(model_of(keys["model"]), keys["member"])
+        at = (keys["model"], keys["member"], keys["samples"], keys["seed"])
+        theta = sample_values(cm, at, keys["sample"])
+        options = json.loads(keys["gear_options"])
+        system = sweeps.regime_system(cm, theta, gear_of(keys["gear"]), options)
+        sweep = np.asarray(json.loads(keys["speeds_rpm"]), dtype=float)
+        labels, failed = sweeps.sweep_labels(
+            {"0": system}, sweep, keys["direction"], json.loads(keys["sweep_options"])
+        )
+        if failed:
+            raise ThermobearError(failed["0"])
+        got = [labels["0"].get(float(v)) for v in rows["speed_rpm"]]
+        bad = [g is None for g in got]
+        return pl.DataFrame({
+            "regime": got, "ok": [not b for b in bad],
+            "error_kind": ["ConfigError" if b else None for b in bad],
+            "error": ["invalid speed_rpm: not a speed of speeds_rpm" if b else None for b in bad],
+        })  # fmt: skip
+
+    return _grouped(kind, inputs, solve)
+
+
+def _shared(name: str) -> Param:
+    return PREDICTION.param(name)
+
+
+REGIME_PREDICTION = Kind(
+    "regime_prediction",
+    "the gear regime at a speed of the sweep on a calibrated bearing model at a sample of its "
+    "calibrated values",
+    (
+        *(_shared(n) for n in ("model", "member", "samples", "seed", "sample")),
+        Param("gear", str, "seed-electric-drive", "gear pair: a preset name, or a GearPair "
+              "(stored as its saved JSON)", convert=gear_text, check=_check_gear,
+              show=lambda t: model_shown(t) if str(t).startswith("{") else t),
+        Param("gear_options", str, "{}", "GearSystem keywords (JSON; the bearings are the "
+              "model's, on the thermal schedule)", convert=lambda v: _canonical(v, "gear_options")),
+        Param("sweep_options", str, "{}", "bifurcation_set keywords (JSON)",
+              convert=lambda v: _canonical(v, "sweep_options")),
+        Param("direction", str, "down", "sweep direction",
+              check=_one_of("direction", "down", "up", "independent")),
+        Param("speeds_rpm", str, "[]", "the sweep's speeds [rpm] (JSON list)",
+              convert=lambda v: _canonical(v, "speeds_rpm")),
+        Param("speed_rpm", float, 0.0, "pinion speed, one of speeds_rpm [rpm]", per_point=True),
+    ),
+    (("regime", "String"),),
+    _run_regimes,
+)  # fmt: skip
+
+register_kind(REGIME_PREDICTION)
 
 
 # -- the sampled band through the study engine -----------------------------------
@@ -285,4 +352,44 @@ def check_engine(engine: Any) -> None:
         )
 
 
-__all__ = ["PREDICTION", "band_study", "check_engine", "model_text", "study_band"]
+def study_labels(
+    model: Any,
+    sample_ids: Sequence[int],
+    order: np.ndarray,
+    run: tuple[Any, dict, dict, str],
+    samples: int,
+    seed: int,
+    engine: Any,
+) -> list[Any]:
+    """The regime labels of samples ``sample_ids`` of ``model`` (0: the
+    estimate) as a ``regime_prediction`` study on ``engine``, one chunk per
+    sample's sweep over ``order`` (``run``: gear, gear options, sweep
+    options, direction): per sample its labels by speed (a dict) or the
+    message of its failure (a str)."""
+    if not hasattr(model, "to_json"):
+        raise ConfigError(
+            f"invalid model = {type(model).__name__}: the study engine needs a CalibratedModel "
+            "(it travels as its saved form)"
+        )
+    gear, gear_options, sweep_options, direction = run
+    fixed = {"model": model, "samples": samples, "seed": seed, "gear": gear,
+             "gear_options": gear_options, "sweep_options": sweep_options,
+             "direction": direction, "speeds_rpm": order}  # fmt: skip
+    dims = {"sample": list(sample_ids), "speed_rpm": order.tolist()}
+    study = Study("regime_prediction", dims, fixed, chunk_size=len(order))
+    df = study.run(engine=None if engine == "local" else engine, progress=False)
+    out: list[Any] = []
+    for (_,), rows in df.group_by(["sample"], maintain_order=True):
+        if rows["ok"].all():
+            out.append(dict(zip(rows["speed_rpm"].to_list(), rows["regime"].to_list(),
+                                strict=True)))  # fmt: skip
+        else:
+            bad = rows.filter(~rows["ok"]).row(0, named=True)
+            out.append(f"{bad['error_kind']}: {bad['error']}")
+    return out
+
+
+__all__ = [
+    "PREDICTION", "REGIME_PREDICTION", "band_study", "check_engine", "model_text",
+    "study_band", "study_labels",
+]  # fmt: skip

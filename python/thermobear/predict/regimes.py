@@ -8,7 +8,10 @@ through the estimates' normal, clipped to the bounds: the sampling of
 the gear pair on those bearings (``GearSystem(gear, bearings=...,
 stiffness="thermal")``: the thermal stiffness schedule of the sampled
 bearing) is swept over the speeds, every sample's sweep in parallel
-(``bifurcation_set``), and each speed's regime label is read off.
+(``bifurcation_set``; or each sample a chunk of a ``regime_prediction``
+study, ``engine=...``) with the RK4 steps its own speeds need, and each
+speed's regime label is read off. A sample whose bearing model or sweep
+fails is left out and counted (more than 10 % refuse the prediction).
 
 * The probability of a regime at a speed is the share of samples with that
   label there; its interval is the Wilson score interval of a binomial
@@ -35,6 +38,7 @@ from typing import TYPE_CHECKING, Any, Literal, Mapping, Optional, Sequence
 import numpy as np
 
 from ..errors import ConfigError, ThermobearError
+from . import sweeps
 from .uncertainty import MAX_FAILED_FRACTION, Parameters, parameters_of, sobol_points
 
 if TYPE_CHECKING:
@@ -62,20 +66,6 @@ _OWN_GEAR_OPTIONS = ("bearings", "stiffness")
 _OWN_SWEEP_OPTIONS = ("systems", "speeds_rpm", "directions", "progress")
 
 COLUMNS = ("speed_rpm", "quantity", "regime", "value", "lower", "upper", "unit", "member", "method")
-
-
-class BearingAt:
-    """A calibrated bearing model at one vector of its calibrated values:
-    what ``GearSystem(bearings=...)`` takes of a calibrated model (the
-    hook ``_thermobear_model_``), for the spec at that vector."""
-
-    def __init__(self, spec: Any) -> None:
-        self.spec = spec
-
-    def _thermobear_model_(self) -> tuple[Any, dict]:
-        from ..diagnosis.calibrated import machine_options
-
-        return machine_options(self.spec)
 
 
 @dataclass
@@ -159,51 +149,64 @@ def member_labels(
     run: tuple[Any, dict, dict, str],
     samples: int,
     seed: int,
+    engine: Any = None,
 ) -> Labels:
     """Sample ``model``'s calibrated values, build each sample's gear
-    system and sweep them all at once; ``run``: (gear, gear options, sweep
-    options, direction). Identical samples (a zero covariance) run once."""
-    from ..gear.dynamics import bifurcation_set
-
-    gear, gear_options, sweep_options, direction = run
+    system and sweep them (``run``: gear, gear options, sweep options,
+    direction): all at once in this process (``engine`` None), or each
+    sample a chunk of a ``regime_prediction`` study on ``engine``.
+    Identical samples (a zero covariance) run once. A sample whose bearing
+    model or sweep fails is left out and counted; more than
+    ``MAX_FAILED_FRACTION`` of them refuse the prediction."""
     par: Parameters = parameters_of(model)
     method = "sampling" if par.names else "none"
     thetas = sobol_points(par, samples, seed) if par.names else par.values[None, :]
     keys = [tuple(float(x) for x in t) for t in thetas]
     distinct = list(dict.fromkeys(keys))
-    systems, failed = {}, 0
-    for i, key in enumerate(distinct):
-        try:
-            systems[str(i)] = _system(model, np.asarray(key), gear, gear_options)
-        except ThermobearError:
-            failed += keys.count(key)
-    if failed > MAX_FAILED_FRACTION * len(keys) or not systems:
+    order = sweep_order(speeds, run[3])
+    if engine is None:
+        got = _labels_here(model, distinct, speeds, run)
+    else:
+        from .engine import study_labels
+
+        first = [keys.index(k) + 1 if par.names else 0 for k in distinct]
+        got = dict(zip(distinct, study_labels(model, first, order, run, samples, seed, engine),
+                       strict=True))  # fmt: skip
+    failed = [k for k in keys if not isinstance(got[k], dict)]
+    if len(failed) > MAX_FAILED_FRACTION * len(keys) or len(failed) == len(keys):
         raise ThermobearError(
-            f"regime prediction ({member or 'model'}): the bearing model failed at {failed} of "
-            f"{len(keys)} samples of the calibrated values; check the calibration"
+            f"regime prediction ({member or 'model'}): the bearing model or its sweep failed at "
+            f"{len(failed)} of {len(keys)} samples of the calibrated values ({got[failed[0]]}); "
+            "check the calibration"
         )
-    pts = bifurcation_set(systems, speeds, directions=(direction,), **sweep_options)
-    by_case = _labels_by_case(pts)
-    order = np.sort(speeds)[::-1] if direction == "down" else np.sort(speeds)
-    rows = [by_case[str(distinct.index(k))] for k in keys if str(distinct.index(k)) in by_case]
+    rows = [[got[k][v] for v in order] for k in keys if isinstance(got[k], dict)]
     return Labels(member, order, np.array(rows, dtype=object), method)
 
 
-def _system(model: Any, theta: np.ndarray, gear: Any, gear_options: dict) -> Any:
-    from ..gear.system import GearSystem
-
-    spec = model.spec_at(theta) if len(theta) else model.spec
-    return GearSystem(gear, bearings=BearingAt(spec), stiffness="thermal", **gear_options)
+def sweep_order(speeds: np.ndarray, direction: str) -> np.ndarray:
+    """The speeds in the order a sweep in ``direction`` visits them."""
+    return np.sort(speeds)[::-1] if direction == "down" else np.sort(speeds)
 
 
-def _labels_by_case(pts: polars.DataFrame) -> dict[str, list[str]]:
-    """Each sweep's per-speed regime labels in sweep order."""
-    per = pts.select("case", "speed_rpm", "regime").unique(
-        subset=["case", "speed_rpm"], keep="first", maintain_order=True
+def _labels_here(
+    model: Any, distinct: Sequence[tuple], speeds: np.ndarray, run: tuple[Any, dict, dict, str]
+) -> dict[tuple, Any]:
+    """Each distinct sample's labels by speed (a dict), or the message of
+    its failure (a str): every sample's system swept in this process."""
+    gear, gear_options, sweep_options, direction = run
+    out: dict[tuple, Any] = {}
+    systems = {}
+    for i, key in enumerate(distinct):
+        try:
+            systems[str(i)] = sweeps.regime_system(model, np.asarray(key), gear, gear_options)
+        except ThermobearError as e:
+            out[key] = f"{type(e).__name__}: {e}"
+    labels, failed = (
+        sweeps.sweep_labels(systems, speeds, direction, sweep_options) if systems else ({}, {})
     )
-    out: dict[str, list[str]] = {}
-    for case, reg in zip(per["case"].to_list(), per["regime"].to_list(), strict=True):
-        out.setdefault(str(case), []).append(str(reg))
+    for i, key in enumerate(distinct):
+        if str(i) in systems:
+            out[key] = labels[str(i)] if str(i) in labels else failed[str(i)]
     return out
 
 
@@ -321,6 +324,7 @@ def predict_regimes(
     gear_options: Optional[Mapping[str, Any]] = None,
     direction: Direction = "down",
     sweep_options: Optional[Mapping[str, Any]] = None,
+    engine: Any = None,
 ) -> polars.DataFrame:
     """The motion regimes of a gear pair on a calibrated bearing model's
     bearings, with the uncertainty of its calibrated values:
@@ -341,7 +345,13 @@ def predict_regimes(
     ``sweep_options``: keywords of
     [`bifurcation_set`][thermobear.bifurcation_set] (``transient_periods``,
     ``record_periods``, ``lyapunov_periods``, ``steps_per_period``, the
-    classifier settings).
+    classifier settings; without ``steps_per_period`` each sample's sweep
+    takes the steps its own speeds need); ``engine``: None sweeps every
+    sample in this process (in parallel), ``"local"``, a Dask ``Client`` or
+    a scheduler address runs each sample's sweep as a chunk of a
+    ``regime_prediction`` [`Study`][thermobear.Study]: the same labels. A
+    sample whose bearing model or sweep fails (at any speed) is left out;
+    more than 10 % failed samples refuse the prediction.
 
     Returns the tidy frame (``speed_rpm``, ``quantity``, ``regime``,
     ``value``, ``lower``, ``upper``, ``unit``, ``member``, ``method``):
@@ -358,13 +368,33 @@ def predict_regimes(
     intervals)."""
     import polars as pl
 
-    from ..gear.pair import GearPair
-
     if method not in ("auto", "sampling"):
         raise ConfigError(
             f"invalid method = {method!r}: regime labels are not smooth in the calibrated "
             "values; 'auto' or 'sampling'"
         )
+    pair = _checked_gear(model, gear, direction)
+    speeds = sweep_speeds(conditions)
+    g, s = _checked_options(gear_options, sweep_options)
+    run = (pair, g, s, direction)
+    members = tuple(getattr(model, "members", ()) or ())
+    targets = [(m, str(m.label)) for m in members] if members else [(model, "")]
+    labs = [member_labels(m, tag, speeds, run, samples, seed, engine) for m, tag in targets]
+    regimes = regime_order([str(x) for lab in labs for x in lab.labels.reshape(-1)])
+    frames = [
+        pl.concat([probability_rows(lab, regimes, level), boundary_rows(lab, level)])
+        for lab in labs
+    ]
+    if members:
+        frames.append(envelope_rows(frames))
+    return pl.concat(frames)
+
+
+def _checked_gear(model: Any, gear: Any, direction: str) -> Any:
+    """The gear pair (None: the seed pair), after checking ``direction``
+    and that ``model`` is a bearing model."""
+    from ..gear.pair import GearPair
+
     if direction not in _DIRECTIONS:
         raise ConfigError(f"invalid direction = {direction!r}: one of {', '.join(_DIRECTIONS)}")
     pair = GearPair.preset("seed-electric-drive") if gear is None else gear
@@ -375,20 +405,7 @@ def predict_regimes(
             f"invalid model = {model!r}: gear regimes need a calibrated bearing model (the "
             "bearings of the gear pair)"
         )
-    speeds = sweep_speeds(conditions)
-    g, s = _checked_options(gear_options, sweep_options)
-    run = (pair, g, s, direction)
-    members = tuple(getattr(model, "members", ()) or ())
-    targets = [(m, str(m.label)) for m in members] if members else [(model, "")]
-    labs = [member_labels(m, tag, speeds, run, samples, seed) for m, tag in targets]
-    regimes = regime_order([str(x) for lab in labs for x in lab.labels.reshape(-1)])
-    frames = [
-        pl.concat([probability_rows(lab, regimes, level), boundary_rows(lab, level)])
-        for lab in labs
-    ]
-    if members:
-        frames.append(envelope_rows(frames))
-    return pl.concat(frames)
+    return pair
 
 
 def regime_boundaries(prediction: polars.DataFrame) -> polars.DataFrame:

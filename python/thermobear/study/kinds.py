@@ -17,6 +17,12 @@ rejects) is a row with its error and null outputs, never an exception.
 * ``prediction``: a calibrated model's outputs at a condition and a sample
   of its calibrated values (defined, and registered with
   ``register_kind``, by ``thermobear.predict.engine``).
+
+``thermal``, ``spindle`` and ``gear`` take an optional ``model``: a
+calibrated model (stored as its JSON text, ``study.models``) in place of
+the bearing or spindle preset, its calibrated options applied as
+``thermal_state`` applies them (a setting at the kind's default takes the
+calibrated value; another one must agree, or the point is a ConfigError).
 """
 
 from __future__ import annotations
@@ -26,9 +32,11 @@ from dataclasses import dataclass
 from typing import Any, Callable, Optional
 
 from .._limits import available_cores, cap_threads
-from .._types import StudyKind
+from .._model_hook import merge_options, scaled_load
+from .._types import StiffnessMode, StudyKind
 from ..errors import ConfigError, ThermobearError
-from ..thermal.state import DEFAULT_SPIN_FRICTION_COEFFICIENT
+from ..thermal.state import DEFAULT_SPIN_FRICTION_COEFFICIENT, HEAT_MODEL_OPTIONS
+from .models import model_of, model_shown, model_text
 
 Runner = Callable[["Kind", Any, Optional[int]], Any]
 
@@ -247,6 +255,49 @@ def _bearing_of(name: str) -> Any:
     return Bearing.preset(str(name))
 
 
+# -- a calibrated model in place of a preset ------------------------------------------
+
+
+def _model_param(preset: str) -> Param:
+    """The optional ``model`` input of a kind whose ``preset`` input it replaces."""
+    return Param(
+        "model",
+        str,
+        "",
+        f"calibrated model (the object, its saved JSON file or text; column: SHA-256 key): "
+        f"replaces the {preset} preset, its calibrated options apply; '' none",
+        convert=model_text,
+        show=model_shown,
+    )
+
+
+def _calibrated(kind: Kind, key: str, preset: str, name: str) -> tuple[Any, dict[str, Any]]:
+    """``(machine, options)`` of the calibrated model of a ``model`` key
+    (``CalibratedModel.model``). The ``preset`` input it replaces must be
+    left at its default, and the model's machine must be that kind's."""
+    from ..bearing import Bearing
+
+    default = kind.param(preset).default
+    if name != default:
+        raise ConfigError(
+            f"invalid {preset} = {name!r}: the calibrated model replaces the {preset} preset; "
+            f"leave {preset} at its default {default!r} when model is given"
+        )
+    machine, options = model_of(key).model()
+    if (preset == "spindle") == isinstance(machine, Bearing):
+        raise ConfigError(
+            f"invalid model = {key!r}: a model of a {type(machine).__name__}; "
+            f"a {kind.name} point takes a model of a {preset}"
+        )
+    return machine, dict(options)
+
+
+def _given(kind: Kind, settings: dict[str, Any]) -> dict[str, Any]:
+    """The settings not at the kind's default: those a calibrated option
+    must agree with (a setting at its default takes the calibrated value)."""
+    return {k: v for k, v in settings.items() if v is not None and v != kind.param(k).default}
+
+
 # -- bearing ----------------------------------------------------------------------
 
 
@@ -321,13 +372,34 @@ def _run_thermal(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
     from ..thermal import thermal_state_many
 
     def solve(model: dict, rows: Any) -> Any:
-        settings = {k: v for k, v in model.items() if k != "bearing"}
-        out = thermal_state_many(
-            _bearing_of(model["bearing"]), pl.DataFrame(_loads(rows)), threads=threads, **settings
-        )
+        settings = {k: v for k, v in model.items() if k not in ("bearing", "model")}
+        loads = _loads(rows)
+        if model["model"]:
+            bearing, settings, loads = _thermal_model(kind, model, settings, loads)
+        else:
+            bearing = _bearing_of(model["bearing"])
+        out = thermal_state_many(bearing, pl.DataFrame(loads), threads=threads, **settings)
         return out.drop("speed_rpm", "axial_n", "radial_n")
 
     return _grouped(kind, inputs, solve)
+
+
+def _thermal_model(
+    kind: Kind, model: dict, settings: dict[str, Any], loads: dict
+) -> tuple[Any, dict[str, Any], dict]:
+    """A thermal point of a calibrated model: its bearing, the settings
+    with its options (as ``thermal_state`` takes them from the model: a
+    setting off its default must agree) and the loads scaled as the
+    calibration applied them to the stated ones (``preload_n`` included)."""
+    import polars as pl
+
+    bearing, options = _calibrated(kind, model["model"], "bearing", model["bearing"])
+    accepted = {p.name for p in kind.params} | {"effects"} | set(HEAT_MODEL_OPTIONS)
+    merged = {**settings, **merge_options(options, _given(kind, settings), accepted)}
+    for scale, arg in (("axial_load_scale", "axial_n"), ("radial_load_scale", "radial_n")):
+        stated = loads[arg].cast(pl.Float64).to_list()
+        loads[arg] = pl.Series(arg, [scaled_load(options, scale, x) for x in stated], pl.Float64)
+    return bearing, merged, loads
 
 
 THERMAL = Kind(
@@ -335,6 +407,7 @@ THERMAL = Kind(
     "coupled thermal steady state of one bearing in the seed A network",
     (
         Param("bearing", str, "7008C", "bearing preset", check=_choice(_bearing_names, "bearing")),
+        _model_param("bearing"),
         *_LOADS,
         Param("lubricant", str, "e-drive ATF", "lubricant preset", check=_check_lubricant),
         Param(
@@ -425,26 +498,50 @@ _SPINDLE_OUTPUTS = tuple((f"{n}_temperature_c", "Float64") for n in _SPINDLE_NOD
 )
 
 
-def _run_spindle(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
+_SPINDLE_SETTINGS = (
+    "preload_n",
+    "radial_n",
+    "preload_kind",
+    "spring_rate_n_per_um",
+    "spin_friction_coefficient",
+)
+
+
+def _spindle_base(kind: Kind, name: str, key: str) -> tuple[Any, dict[str, Any]]:
+    """``(spindle, options)``: the preset, or a calibrated model's spindle
+    and options."""
     from ..spindle import Spindle
 
-    presets: dict[str, Any] = {}
+    return _calibrated(kind, key, "spindle", name) if key else (Spindle.preset(name), {})
+
+
+def _run_spindle(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
+    bases: dict[tuple[str, str], Any] = {}
+    for name, key in inputs.select("spindle", "model").unique(maintain_order=True).iter_rows():
+        try:  # built once, before the threads
+            bases[(name, key)] = _spindle_base(kind, name, key)
+        except ThermobearError as e:
+            bases[(name, key)] = (type(e), str(e))
 
     def point(row: dict) -> dict:
-        name = row["spindle"]
-        base = presets.get(name) or presets.setdefault(name, Spindle.preset(name))
+        base, options = bases[(row["spindle"], row["model"])]
+        if isinstance(base, type):
+            raise base(options)
+        # As thermal_state takes a calibrated model: its options must agree
+        # with the settings given, its preload scale acts on preload_n.
+        given = {k: row[k] for k in _SPINDLE_SETTINGS if row[k] is not None}
+        s = merge_options(options, given, {"effects", *_SPINDLE_SETTINGS})
         sp = base.with_options(
-            preload_n=row["preload_n"],
-            preload_kind=row["preload_kind"],
-            spring_rate_n_per_um=row["spring_rate_n_per_um"],
-            radial_load_n=row["radial_n"],
-            spin_friction_coefficient=row["spin_friction_coefficient"],
+            preload_n=s.get("preload_n"),
+            preload_kind=s.get("preload_kind"),
+            spring_rate_n_per_um=s.get("spring_rate_n_per_um"),
+            radial_load_n=s.get("radial_n"),
+            effects=s.get("effects"),
+            spin_friction_coefficient=s.get("spin_friction_coefficient"),
         )
         state = sp.thermal_state(row["speed_rpm"]).row(0, named=True)
         return {k: state[k] for k, _ in _SPINDLE_OUTPUTS if k in state}
 
-    for name in inputs["spindle"].unique(maintain_order=True):
-        presets[name] = Spindle.preset(name)  # built once, before the threads
     return _row_map(inputs, threads, point)
 
 
@@ -459,6 +556,7 @@ SPINDLE = Kind(
             "spindle preset",
             check=_choice(_spindle_names, "spindle"),
         ),
+        _model_param("spindle"),
         Param("speed_rpm", float, 10_000.0, "shaft speed [rpm]"),
         # Default None: the preset's own value (null in the table).
         Param("preload_n", float, None, "preload force [N]"),
@@ -481,15 +579,32 @@ SPINDLE = Kind(
 # -- gear ---------------------------------------------------------------------------
 
 
-def _run_gear(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
+def _gear_bearings(kind: Kind, row: dict) -> tuple[Any, StiffnessMode]:
+    """The shafts' bearings and stiffness model of a gear point: the
+    preset, or a calibrated model with the ``"thermal"`` stiffness (its
+    options act on that schedule; ``"speed"``, the default, becomes it)."""
     from ..bearing import Bearing
+
+    if not row["model"]:
+        return Bearing.preset(row["bearing"]), row["stiffness"]
+    _calibrated(kind, row["model"], "bearing", row["bearing"])
+    if row["stiffness"] not in ("speed", "thermal"):
+        raise ConfigError(
+            f"invalid stiffness = {row['stiffness']!r}: the calibrated model sets "
+            "stiffness = 'thermal' (its options act on the thermal stiffness schedule)"
+        )
+    return model_of(row["model"]), "thermal"
+
+
+def _run_gear(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
     from ..gear import GearPair, GearSystem, regime_map
 
     def point(row: dict) -> dict:
+        bearings, stiffness = _gear_bearings(kind, row)
         system = GearSystem(
             GearPair.preset(row["gear"]),
-            Bearing.preset(row["bearing"]),
-            row["stiffness"],
+            bearings,
+            stiffness,
             backlash_total_um=row["backlash_total_um"],
             mesh_damping_ratio=row["mesh_damping_ratio"],
             te_amplitude_um=row["te_amplitude_um"],
@@ -537,12 +652,14 @@ GEAR = Kind(
             "bearing preset of the shafts",
             check=_choice(_bearing_names, "bearing"),
         ),
+        _model_param("bearing"),
         Param(
             "stiffness",
             str,
             "speed",
-            "bearing stiffness model: 'speed' (as tb.GearSystem) or 'constant'",
-            check=_one_of("stiffness", "constant", "speed"),
+            "bearing stiffness model: 'speed' (as tb.GearSystem), 'constant' or 'thermal' "
+            "(a model's: 'thermal')",
+            check=_one_of("stiffness", "constant", "speed", "thermal"),
         ),
         Param("speed_rpm", float, 3000.0, "pinion speed [rpm]"),
         Param("torque_n_m", float, 100.0, "input torque [N m]"),

@@ -18,7 +18,14 @@ from .kinds import kind_of
 from .store import FORMAT, Store
 
 #: Points per chunk by kind: a chunk is about 0.1 .. 1 s of work on one core.
-DEFAULT_CHUNK = {"bearing": 20000, "thermal": 500, "spindle": 8, "gear": 8, "prediction": 500}
+DEFAULT_CHUNK = {
+    "bearing": 20000,
+    "thermal": 500,
+    "spindle": 8,
+    "gear": 8,
+    "prediction": 500,
+    "regime_prediction": 64,
+}
 
 
 def _count(n: int, noun: str) -> str:
