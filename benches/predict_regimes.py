@@ -30,7 +30,7 @@ import polars as pl
 
 import thermobear as tb
 from thermobear import diagnosis as D
-from thermobear.predict.regimes import _system
+from thermobear.predict.sweeps import regime_system
 
 TORQUE_N_M = 20.0
 GEAR_OPTIONS = {"torque_n_m": TORQUE_N_M, "te_amplitude_um": 5.0}
@@ -77,7 +77,7 @@ def main() -> None:
     )  # fmt: skip
     t_all = time.perf_counter() - t
     t = time.perf_counter()
-    one = _system(cm, cm.values, gear, GEAR_OPTIONS)
+    one = regime_system(cm, cm.values, gear, GEAR_OPTIONS)
     t_schedule = time.perf_counter() - t
     t = time.perf_counter()
     tb.bifurcation(one, speeds, direction="down")

@@ -285,3 +285,20 @@ def test_checker_flags_an_upward_import(monkeypatch):
 @pytest.mark.parametrize("module", ["thermobear.errors", "thermobear.diagnosis.workflow"])
 def test_layers_are_ordered(module):
     assert layer_of(module) < layer_of("thermobear.studies.demo")
+
+
+def test_bench_scripts_import_names_that_exist():
+    """The Python benchmark scripts are not run by the tests (they time
+    things), so check what they import from thermobear still exists."""
+    import importlib
+
+    benches = PACKAGE.parents[1] / "benches"
+    checked = 0
+    for path in sorted(benches.glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("thermobear"):
+                module = importlib.import_module(node.module)
+                for alias in node.names:
+                    assert hasattr(module, alias.name), f"{path.name}: {node.module}.{alias.name}"
+                    checked += 1
+    assert checked > 0
