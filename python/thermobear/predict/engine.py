@@ -90,15 +90,21 @@ def _conditions(spec: Any, rows: polars.DataFrame) -> polars.DataFrame:
     return rows.select(condition_columns(spec))
 
 
+def _sample_of(keys: dict, kind_name: str) -> tuple[Any, np.ndarray]:
+    """The calibrated model (or tie member) of a prediction point and its
+    calibrated values at the point's sample (empty: no calibrated value)."""
+    if not keys["model"]:
+        raise ConfigError(f"invalid model = '': a {kind_name} study needs a model")
+    cm = _member_of(model_of(keys["model"]), keys["member"])
+    at = (keys["model"], keys["member"], keys["samples"], keys["seed"])
+    return cm, sample_values(cm, at, keys["sample"])
+
+
 def _run_prediction(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
     import polars as pl
 
     def solve(keys: dict, rows: Any) -> Any:
-        if not keys["model"]:
-            raise ConfigError("invalid model = '': a prediction study needs a model")
-        cm = _member_of(model_of(keys["model"]), keys["member"])
-        at = (keys["model"], keys["member"], keys["samples"], keys["seed"])
-        theta = sample_values(cm, at, keys["sample"])
+        cm, theta = _sample_of(keys, "prediction")
         spec = cm.spec_at(theta) if theta.size else cm.spec
         got = spec.predict(_conditions(spec, rows))
         out = {q: np.asarray(got[q], dtype=float) for q in quantities_for(spec, keys["what"])}
@@ -217,11 +223,7 @@ def _run_regimes(kind: Kind, inputs: Any, threads: Optional[int]) -> Any:
     from . import sweeps
 
     def solve(keys: dict, rows: Any) -> Any:
-        if not keys["model"]:
-            raise ConfigError("invalid model = '': a regime_prediction study needs a model")
-        cm = _member_of(model_of(keys["model"]), keys["member"])
-        at = (keys["model"], keys["member"], keys["samples"], keys["seed"])
-        theta = sample_values(cm, at, keys["sample"])
+        cm, theta = _sample_of(keys, "regime_prediction")
         options = json.loads(keys["gear_options"])
         system = sweeps.regime_system(cm, theta, gear_of(keys["gear"]), options)
         sweep = np.asarray(json.loads(keys["speeds_rpm"]), dtype=float)
