@@ -10,15 +10,82 @@
 //! The flag belongs to the thread that runs the closure: work that a loop
 //! hands to other threads (nested rayon iterations) does not see it and
 //! simply runs to its end.
+//!
+//! The same loops count their steps with [`advance`] into a counter a
+//! caller installs with [`with_progress`] (the bindings report it to a
+//! progress callback), and size themselves with [`step_count`], which
+//! refuses more than [`MAX_TIME_STEPS`] steps before any memory is taken.
 
 use std::cell::RefCell;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Arc;
 
 use crate::error::{Error, Result};
 
+/// The most time steps one transient or time response may take. Ten
+/// million steps of a spindle transient are hours of work, and a record of
+/// every step would hold gigabytes; a step this small is a mistake, not a
+/// model.
+pub const MAX_TIME_STEPS: usize = 10_000_000;
+
 thread_local! {
     static FLAG: RefCell<Option<Arc<AtomicBool>>> = const { RefCell::new(None) };
+    static PROGRESS: RefCell<Option<Arc<AtomicUsize>>> = const { RefCell::new(None) };
+}
+
+/// The number of steps of `dt_s` that cover `duration_s` (`round` or
+/// `ceil` by the caller's rule, at least 1), or a `ConfigError` naming
+/// `dt_s` and `duration_s` when it exceeds [`MAX_TIME_STEPS`] (or is not a
+/// number). `dt_name` is the caller's name for the step.
+pub fn step_count(duration_s: f64, dt_s: f64, dt_name: &str, round: fn(f64) -> f64) -> Result<usize> {
+    let steps = round(duration_s / dt_s);
+    if steps.is_nan() || steps > MAX_TIME_STEPS as f64 {
+        let short = |x: f64| {
+            if x == 0.0 || (1e-4..1e15).contains(&x.abs()) {
+                format!("{x}")
+            } else {
+                format!("{x:e}")
+            }
+        };
+        let (dt, duration) = (short(dt_s), short(duration_s));
+        return Err(Error::config(
+            dt_name,
+            &dt,
+            format!(
+                "duration_s = {duration} s in steps of {dt_name} = {dt} s is {steps:e} steps, more than \
+                 the {MAX_TIME_STEPS} a run may take; use {dt_name} >= {:e} s or a shorter duration_s",
+                duration_s / MAX_TIME_STEPS as f64
+            ),
+        ));
+    }
+    Ok((steps as usize).max(1))
+}
+
+/// Run `f` on this thread with `counter` as the step counter [`advance`]
+/// adds to.
+pub fn with_progress<R>(counter: &Arc<AtomicUsize>, f: impl FnOnce() -> R) -> R {
+    let prev = PROGRESS.with(|c| c.replace(Some(Arc::clone(counter))));
+    let _restore = RestoreProgress(prev);
+    f()
+}
+
+/// Count one step of a long loop (nothing without [`with_progress`]).
+pub fn advance() {
+    PROGRESS.with(|c| {
+        if let Some(n) = c.borrow().as_ref() {
+            n.fetch_add(1, Ordering::Relaxed);
+        }
+    });
+}
+
+/// Restores the counter a thread had before [`with_progress`].
+struct RestoreProgress(Option<Arc<AtomicUsize>>);
+
+impl Drop for RestoreProgress {
+    fn drop(&mut self) {
+        let prev = self.0.take();
+        PROGRESS.with(|c| *c.borrow_mut() = prev);
+    }
 }
 
 /// Restores the flag a thread had before [`with_flag`] (also on panic).
@@ -65,5 +132,31 @@ mod tests {
         });
         // Restored after the closure.
         assert!(check().is_ok());
+    }
+
+    #[test]
+    fn step_count_refuses_more_than_the_cap_naming_both_times() {
+        assert_eq!(step_count(10.0, 3.0, "dt_s", f64::ceil).unwrap(), 4);
+        assert_eq!(step_count(10.0, 3.0, "dt_s", f64::round).unwrap(), 3);
+        assert_eq!(
+            step_count(1.0, 1.0 / MAX_TIME_STEPS as f64, "dt_s", f64::round).unwrap(),
+            MAX_TIME_STEPS
+        );
+        for dt in [1e-300, 0.0, f64::NAN] {
+            let e = step_count(375.0, dt, "dt_s", f64::ceil).unwrap_err().to_string();
+            assert!(e.contains("dt_s") && e.contains("duration_s = 375"), "{e}");
+        }
+    }
+
+    #[test]
+    fn advance_counts_into_the_installed_counter_only() {
+        advance();
+        let n = Arc::new(AtomicUsize::new(0));
+        with_progress(&n, || {
+            advance();
+            advance();
+        });
+        advance();
+        assert_eq!(n.load(Ordering::Relaxed), 2);
     }
 }

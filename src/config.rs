@@ -31,6 +31,9 @@
 //! churning_oil_fraction = 0.0      # oil volume fraction of the cavity mixture (0..1)
 //! heat_model = "palmgren"          # or "skf" (docs/concepts/physics.md §9)
 //! # lubrication = "jet"            # grease, oil-air, oil-mist, jet, oil-bath
+//! # lubrication_factor_f0 = 1.0    # Palmgren f0 (default: the method's)
+//! # [model.oil_supply]             # the supply of the method (physics.md §9)
+//! # oil_flow_cm3_per_min = 500.0   # jet; oil-air: oil_volume_cm3_per_h, air_flow_l_per_min
 //! ```
 
 use serde::Deserialize;
@@ -182,6 +185,10 @@ pub struct ModelConfig {
     /// (0..1, dimensionless) for the ball drag heat (coupled thermal model;
     /// see [`crate::thermal::coupled::CoupledOptions::churning_oil_fraction`]).
     pub churning_oil_fraction: Option<f64>,
+    /// Palmgren's lubrication factor f0 (dimensionless, > 0); given, it
+    /// overrides the `lubrication` method's default (e.g. a source that
+    /// states both its supply and its f0).
+    pub lubrication_factor_f0: Option<f64>,
     /// Heat model: "palmgren" (default) or "skf" (docs/concepts/physics.md §9).
     pub heat_model: Option<String>,
     /// Lubrication method ("grease", "oil-air", "oil-mist", "jet",
@@ -189,6 +196,13 @@ pub struct ModelConfig {
     /// `[bearing]` section is there and `churning_oil_fraction` is not given
     /// ([`crate::thermal::friction::Lubrication::defaults`]).
     pub lubrication: Option<String>,
+    /// Oil supply, `[model.oil_supply]` (docs/concepts/physics.md §9, oil
+    /// supply): the keys of the lubrication method (`oil_flow_cm3_per_min`,
+    /// `jet_count`, `jet_velocity_m_per_s`; `oil_volume_cm3_per_h`,
+    /// `air_flow_l_per_min`; `oil_level_mm`; `grease_fill_fraction`) and the
+    /// tunings `oil_flow_scale`, `cavity_fraction_speed_exponent`
+    /// ([`crate::thermal::oil_supply::SupplyInput::resolve`]).
+    pub oil_supply: Option<crate::thermal::oil_supply::SupplyInput>,
 }
 
 impl SystemConfig {
@@ -230,14 +244,37 @@ impl SystemConfig {
         }
     }
 
+    /// The raceway control of `[model]` ("outer" when absent; another name
+    /// is a `ConfigError` naming `raceway_control`).
+    pub fn raceway_control(&self) -> Result<crate::bearing::RacewayControl> {
+        match self.model.as_ref().and_then(|m| m.raceway_control.as_deref()) {
+            Some(name) => crate::bearing::RacewayControl::from_name(name),
+            None => Ok(crate::bearing::RacewayControl::default()),
+        }
+    }
+
+    /// The options of a bearing solve from `[model]`: its effects and its
+    /// raceway control (the other options at their defaults).
+    pub fn solve_options(&self) -> Result<crate::bearing::SolveOptions> {
+        Ok(crate::bearing::SolveOptions {
+            effects: self.effects()?,
+            raceway_control: self.raceway_control()?,
+            ..Default::default()
+        })
+    }
+
     /// The coupled thermal options with the `[model]` calibration inputs
-    /// applied to `base` (validated: bad values name their key).
+    /// applied to `base` (validated: bad values name their key), its raceway
+    /// control included.
     pub fn coupled_options(
         &self,
         base: crate::thermal::coupled::CoupledOptions,
     ) -> Result<crate::thermal::coupled::CoupledOptions> {
         let mut o = base;
         if let Some(m) = &self.model {
+            if m.raceway_control.is_some() {
+                o.solve.raceway_control = self.raceway_control()?;
+            }
             if let Some(e) = m.extra_heat_w {
                 o.extra_heat_w = e;
             }
@@ -255,12 +292,23 @@ impl SystemConfig {
                     Some(_) => self.bearing()?.geometry.bearing_type,
                     None => crate::bearing::BearingType::AngularContact,
                 };
-                let (lub, f0, x) =
-                    crate::thermal::friction::resolve_lubrication(Some(l), kind, None, m.churning_oil_fraction)?;
+                let (lub, f0, x) = crate::thermal::friction::resolve_lubrication(
+                    Some(l),
+                    kind,
+                    m.lubrication_factor_f0,
+                    m.churning_oil_fraction,
+                )?;
                 o.lubrication = lub;
                 o.lubrication_factor_f0 = f0;
                 o.churning_oil_fraction = x;
+            } else if let Some(f0) = m.lubrication_factor_f0 {
+                o.lubrication_factor_f0 = f0;
             }
+            o.oil_supply = m.oil_supply.unwrap_or_default().resolve(
+                o.lubrication,
+                m.lubrication.is_some(),
+                m.churning_oil_fraction.is_some(),
+            )?;
         }
         o.validate()?;
         Ok(o)
@@ -516,6 +564,32 @@ mod tests {
     }
 
     #[test]
+    fn model_raceway_control_reaches_the_solve_and_the_thermal_model() {
+        use crate::bearing::RacewayControl;
+        use crate::thermal::coupled::CoupledOptions;
+        let with = |body: &str| SystemConfig::from_toml(&format!("[model]\n{body}\n")).unwrap();
+        let inner = with("raceway_control = \"inner\"");
+        assert_eq!(inner.solve_options().unwrap().raceway_control, RacewayControl::Inner);
+        let o = inner.coupled_options(CoupledOptions::default()).unwrap();
+        assert_eq!(o.solve.raceway_control, RacewayControl::Inner);
+        // Absent: outer control, the default of both.
+        assert_eq!(with("").solve_options().unwrap().raceway_control, RacewayControl::Outer);
+        for bad in [with("raceway_control = \"middle\"")] {
+            for e in [
+                bad.solve_options().unwrap_err(),
+                bad.coupled_options(CoupledOptions::default()).unwrap_err(),
+            ] {
+                match e {
+                    Error::Config { field, value, .. } => {
+                        assert_eq!((field.as_str(), value.as_str()), ("raceway_control", "middle"))
+                    }
+                    other => panic!("{other}"),
+                }
+            }
+        }
+    }
+
+    #[test]
     fn model_thermal_calibration_inputs_parse_and_validate() {
         use crate::thermal::coupled::CoupledOptions;
         let with = |body: &str| SystemConfig::from_toml(&format!("[model]\n{body}\n")).unwrap();
@@ -576,5 +650,54 @@ mod tests {
             Err(Error::Config { field, .. }) => assert_eq!(field, "lubrication"),
             other => panic!("{other:?}"),
         }
+    }
+
+    #[test]
+    fn model_oil_supply_parses_into_the_supply_of_the_method() {
+        use crate::thermal::coupled::CoupledOptions;
+        use crate::thermal::friction::Lubrication;
+        use crate::thermal::oil_supply::OilSupply;
+        let text = "[model]\nlubrication = \"jet\"\n[model.oil_supply]\noil_flow_cm3_per_min = 500.0\njet_count = 2\n";
+        let o = SystemConfig::from_toml(text)
+            .unwrap()
+            .coupled_options(CoupledOptions::default())
+            .unwrap();
+        let s = o.oil_supply.unwrap();
+        assert_eq!(
+            s.supply,
+            OilSupply::Jet {
+                oil_flow_cm3_per_min: 500.0,
+                jet_count: 2,
+                jet_velocity_m_per_s: None
+            }
+        );
+        // A stated f0 overrides the method's (a deep-groove jet: 4), with or
+        // without a method; zero names its key.
+        let f0 = |m: &str| {
+            SystemConfig::from_toml(&format!("[bearing]\npreset = \"6208\"\n[model]\n{m}"))
+                .unwrap()
+                .coupled_options(CoupledOptions::default())
+        };
+        assert_eq!(f0("lubrication = \"jet\"\n").unwrap().lubrication_factor_f0, 4.0);
+        let given = f0("lubrication = \"jet\"\nlubrication_factor_f0 = 1.0\n").unwrap();
+        assert_eq!(
+            (given.lubrication, given.lubrication_factor_f0),
+            (Lubrication::Jet, 1.0)
+        );
+        assert_eq!(f0("lubrication_factor_f0 = 1.5\n").unwrap().lubrication_factor_f0, 1.5);
+        match f0("lubrication = \"jet\"\nlubrication_factor_f0 = 0.0\n") {
+            Err(Error::Config { field, .. }) => assert_eq!(field, "lubrication_factor_f0"),
+            other => panic!("{other:?}"),
+        }
+        // A key of another method names itself; an unknown key is a parse error.
+        let bad = "[model]\nlubrication = \"jet\"\n[model.oil_supply]\noil_level_mm = 5.0\n";
+        match SystemConfig::from_toml(bad)
+            .unwrap()
+            .coupled_options(CoupledOptions::default())
+        {
+            Err(Error::Config { field, .. }) => assert_eq!(field, "oil_level_mm"),
+            other => panic!("{other:?}"),
+        }
+        assert!(SystemConfig::from_toml("[model.oil_supply]\nflow = 1.0\n").is_err());
     }
 }

@@ -54,7 +54,7 @@ impl Error {
     pub fn config(field: impl Into<String>, value: impl std::fmt::Display, reason: impl Into<String>) -> Self {
         Error::Config {
             field: field.into(),
-            value: value.to_string(),
+            value: short_number(value.to_string()),
             reason: reason.into(),
         }
     }
@@ -68,6 +68,17 @@ impl Error {
             tolerance,
         }
     }
+}
+
+/// A long number written in full (`1e300` as 301 digits) in exponent form;
+/// any other text unchanged.
+fn short_number(text: String) -> String {
+    if text.len() > 20 {
+        if let Ok(x) = text.parse::<f64>() {
+            return format!("{x:e}");
+        }
+    }
+    text
 }
 
 /// Check that a value is finite; name the field otherwise.
@@ -120,6 +131,8 @@ mod tests {
         assert!(s.contains("ball_diameter_mm") && s.contains("-1"), "{s}");
         let e = finite("speed_rpm", f64::NAN).unwrap_err();
         assert!(e.to_string().contains("NaN"));
+        let e = Error::config("axial_n", 1e300, "too large");
+        assert_eq!(e.to_string(), "invalid axial_n = 1e300: too large");
         let e = Error::convergence("quasi-static", 50, 1.5e-3, 1e-9);
         assert!(e.to_string().contains("1.500e-3"));
     }

@@ -99,12 +99,15 @@ def test_fraction_outside_zero_one_is_a_config_error(bearing, bad):
 
 
 def test_model_section_carries_the_oil_fraction():
-    text = tb.seed_config("seed_b_7009c")
-    text = text.replace("[model]", "[model]\nchurning_oil_fraction = 0.02", 1)
+    seed_b = tb.seed_config("seed_b_7009c")
+    # Seed B states its oil-air supply ([model.oil_supply], the last table):
+    # the drag follows it, and the fixed fraction is the override beside it.
+    assert D.model_from_toml(seed_b)[0].options["churning_oil_fraction"] is None
+    fixed = "[model]\nchurning_oil_fraction = 0.02"
+    with pytest.raises(tb.ConfigError, match="churning_oil_fraction"):
+        D.model_from_toml(seed_b.replace("[model]", fixed, 1))
+    text = seed_b.split("[model.oil_supply]")[0].replace("[model]", fixed, 1)
     # model_from_toml checks the text with the Rust parser (unknown keys are
     # rejected there), then passes the value on to the thermal options.
     spec, _ = D.model_from_toml(text)
     assert spec.options["churning_oil_fraction"] == 0.02
-    assert (
-        D.model_from_toml(tb.seed_config("seed_b_7009c"))[0].options["churning_oil_fraction"] == 0.0
-    )

@@ -236,7 +236,7 @@ def test_data_errors_of_the_installed_command_exit_1_on_one_line(tmp_path, seed_
     r = _run("diagnose", str(csv), "--model", str(path))
     assert r.returncode == 1
     assert r.stderr.splitlines() == [
-        f"thermobear: error: {csv}:6: column value: invalid value: not numeric (dtype String)"
+        f"thermobear: error: {csv}:6: column value: invalid value = 'warm' in row 2: not numeric"
     ]
     r = _run("--debug", "diagnose", str(csv), "--model", str(path))
     assert r.returncode == 1 and "Traceback" in r.stderr

@@ -238,7 +238,7 @@ def test_diagnosis_tables_plots_and_cli(tmp_path, baseline):
     )
     assert "lubrication_factor_f0" in d.summary()
     ax = tb.plot.diagnosis_fit(d, "ball_temperature_c")
-    assert ax.get_ylabel() == "ball_temperature_c"
+    assert ax.get_ylabel() == "ball temperature [°C]"
     assert tb.plot.diagnosis_residuals(d) is not None
     # the command line: seed B configuration (default effects = all) on its own data
     from thermobear.cli import main

@@ -325,10 +325,11 @@ def test_quick_demo_study_writes_its_tables(tmp_path) -> None:
         "regimes",
         "regimes_vs_paper",
         "regime_map",
-        "poincare_seed_100nm",
     ):
         assert f"{stem}.parquet" in names and f"{stem}.csv" in names
-    assert sum(n.startswith("bifurcation_seed_100nm_") for n in names) >= 4
+    # Poincare point sets are large: parquet only.
+    assert "poincare_seed_100_n_m.parquet" in names and "poincare_seed_100_n_m.csv" not in names
+    assert sum(n.startswith("seed_a_fig1") and "_bifurcation_100_n_m_" in n for n in names) >= 4
     reg = pl.read_parquet(tmp_path / "regimes.parquet")
     seed = reg.filter(pl.col("torque_n_m") == 100.0)
     # The seed operating point: period-1 without impacts everywhere.

@@ -27,6 +27,8 @@ LAYERS: list[tuple[str, ...]] = [
         "thermobear.errors",
         "thermobear._optional",
         "thermobear._limits",
+        "thermobear._validate",
+        "thermobear.plausibility",
         "thermobear._types",
         "thermobear._deprecation",
         "thermobear._names",

@@ -125,7 +125,7 @@ def test_a_stiffness_band_reads_in_newton_per_micrometre(single, ax):
     lo, hi = _bounds_of(_bands(ax)[0], rows["speed_rpm"].to_numpy())
     assert np.allclose(lo, rows["lower"].to_numpy() * 1e-6)
     assert np.allclose(hi, rows["upper"].to_numpy() * 1e-6)
-    assert ax.get_ylabel() == "k_xx [N/µm]"
+    assert ax.get_ylabel() == "radial stiffness $k_{xx}$ [N/µm]"
     assert not ax.containers  # no measured points given
 
 

@@ -16,7 +16,7 @@ def test_seed_b_spindle_study_quick(tmp_path: Path) -> None:
     fn = study_function(dict(STUDIES)["seed_b_spindle"])
     files = fn(tmp_path, True)
     assert all(f.exists() for f in files)
-    assert any(f.name == "seed_b_fig4_transient.png" for f in files)
+    assert any(f.name == "seed_b_fig04_transient.png" for f in files)
     t = pl.read_parquet(tmp_path / "paper_vs_thermobear_seed_b.parquet")
     assert t.columns == [
         "quantity",

@@ -133,44 +133,59 @@ CAPTIONS: list[tuple[str, str]] = [
         "contact angle (the mechanism seed A gives for Fig. 11).",
     ),
     (
-        r"seed_a_heat_no_load",
+        r"seed_a_fig6a_heat_no_load",
         "Seed A Fig. 6a: friction heat of the 6208 against speed for several "
         "axial preloads, no external load.",
     ),
     (
-        r"seed_a_heat_loaded",
+        r"seed_a_fig6b_heat_loaded",
         "Seed A Fig. 6b: friction heat against speed and preload at the 100 N m "
         "load case (Fa = 2380.9 N, Fr = 1189.9 N from the gear forces).",
     ),
     (
-        r"seed_a_temperatures_vs_speed",
+        r"seed_a_fig8a_temperatures_vs_speed",
         "Seed A Fig. 8a: temperatures of the thermal-network nodes (shaft, inner "
         "ring, balls, outer ring, housing) against speed, 300 N preload, no load.",
     ),
     (
-        r"seed_a_temperatures_vs_axial_load",
+        r"seed_a_fig8b_temperatures_vs_axial_load",
         "Seed A Fig. 8b: node temperatures at 6500 rpm against the axial load "
         "(0 to 2380.9 N) with Fr = 1189.9 N.",
     ),
     (
-        r"seed_a_temperatures_vs_radial_load",
+        r"seed_a_fig8c_temperatures_vs_radial_load",
         "Seed A Fig. 8c: node temperatures at 6500 rpm against the radial load "
         "(0 to 1189.9 N) with Fa = 2380.9 N.",
     ),
     (
         r"seed_a_deformations_vs_speed",
-        "Seed A Fig. 10: axial and radial deformations of the 6208 against speed "
-        "at the 100 N m case: load, centrifugal and thermal parts. The radial "
-        "thermal part is of the order of the load part; the axial one is small.",
+        "Seed A, detail of Fig. 10: the thermal parts of the 6208's deformation "
+        "against speed at the 100 N m case (radial and axial groove-centre "
+        "offsets, ball growth) beside the centrifugal ring expansion.",
     ),
     (
-        r"seed_a_(?P<dir>radial|axial)_stiffness_three_cases",
+        r"seed_a_fig10_deformations",
+        "Seed A Fig. 10: (a) axial and (b) radial deformation of the 6208 against "
+        "speed at the 100 N m case (300 N preload): the part under load, the "
+        "centrifugal and thermal parts and the combined deformation u_a-all, "
+        "u_r-all. The axial thermal part is small against the load part; the "
+        "radial one is of the size of the load part.",
+    ),
+    (
+        r"seed_a_fig13_mesh_stiffness",
+        "Seed A Fig. 13: time-varying mesh stiffness of the first gear pair: "
+        "the stiffness of each tooth pair as it approaches, passes the pitch "
+        "point and recesses (tooth pairs 1 to 11, one mesh period apart) and "
+        "their parallel sum, potential-energy tooth model.",
+    ),
+    (
+        r"seed_a_fig11_(?P<dir>radial|axial)_stiffness_three_cases",
         "Seed A Fig. 11: {dir} stiffness of the 6208 against speed for the three "
         "cases (constant, speed-dependent without thermal effects, thermally "
         "coupled), 100 N m, 6500 to 16,500 rpm.",
     ),
     (
-        r"bifurcation_seed_100nm_(?P<case>constant|speed|thermal)_(?P<d>up|down)",
+        r"seed_a_fig1[45][abc]_bifurcation_100_n_m_(?P<case>constant|speed|thermal)_(?P<d>up|down)",
         "Seed A Fig. {fig}: bifurcation diagram of the helical pair's dynamic "
         "transmission error (Poincare section once per mesh period) against "
         "speed at the paper's 100 N m, {case_text}, {d_text}.",
@@ -201,44 +216,66 @@ CAPTIONS: list[tuple[str, str]] = [
         "(compare Fig. 13a).",
     ),
     (
-        r"seed_b_fig4_transient",
-        "Seed B Fig. 4: transient temperatures of the spindle's bearing parts "
-        "from ambient at 12,000 rpm, 300 N spring preload (seed B reports a "
-        "near-steady state after about 21 min).",
+        r"seed_b_fig02_convection_coefficients",
+        "Seed B Fig. 2: film coefficients of the spindle network's convection "
+        "boundaries against speed (bearing oil-air films, rotor-stator air gap, "
+        "shaft end in air; natural convection of the housing and the water "
+        "jacket, constant, beside them). Table 1 is their values at 12,000 rpm.",
     ),
     (
-        r"seed_b_fig5_temperatures_vs_speed",
+        r"seed_b_fig03_temperature_field",
+        "Seed B Fig. 3: node temperatures of the spindle network at 12,000 rpm, "
+        "400 N, drawn on a schematic half cross-section; each region is one "
+        "lumped node at one temperature, not a finite-element field.",
+    ),
+    (
+        r"seed_b_fig04_transient",
+        "Seed B Fig. 4: transient temperatures of the balls, inner and outer "
+        "rings of the front (solid) and rear (dashed) bearings from ambient at "
+        "12,000 rpm, 400 N spring preload (seed B: near-steady after about 21 min).",
+    ),
+    (
+        r"seed_b_fig05_temperatures_vs_speed",
         "Seed B Fig. 5: steady temperatures of balls, inner and outer rings of "
-        "the front and rear pairs against speed, 300 N preload.",
+        "the front (solid) and rear (dashed) bearings against speed, 400 N.",
     ),
     (
-        r"seed_b_fig6_temperatures_vs_preload",
-        "Seed B Fig. 6: steady temperatures against preload at 18,000 rpm.",
+        r"seed_b_fig06_ball_temperature_vs_preload",
+        "Seed B Fig. 6: ball temperature of the front and rear bearings against "
+        "preload, one colour per speed.",
     ),
     (
-        r"seed_b_fig8_thermal_displacement",
-        "Seed B Fig. 8a: radial thermal displacement of the front bearing "
-        "against speed, Si3N4 balls against steel balls (seed B: 8.2 against "
-        "16.68 um at 18,000 rpm).",
+        r"seed_b_fig08_thermal_displacement",
+        "Seed B Fig. 8: (a) radial thermal displacement and (b) axial groove-centre "
+        "offset of the front and rear bearings against speed, Si3N4 against steel "
+        "balls (seed B: 8.2 against 16.68 um radial at 18,000 rpm).",
     ),
     (
         r"seed_b_fig12_radial_stiffness",
-        "Seed B Fig. 12: radial stiffness of the front pair against speed at "
-        "300 N, with and without thermal coupling.",
+        "Seed B Fig. 12: radial stiffness of the front pair against speed at 300, "
+        "400 and 500 N, (a) uncoupled and (b) with thermal displacement.",
     ),
     (
         r"seed_b_fig13_contact_angles",
-        "Seed B Fig. 13: inner and outer contact angles of the front bearing "
-        "against speed for several preloads, thermally coupled.",
+        "Seed B Fig. 13: (a) inner and outer contact angles of the front bearing "
+        "against speed by preload, uncoupled; (b) at 400 N, uncoupled against "
+        "thermally coupled.",
     ),
     (
         r"seed_b_fig14_contact_loads",
-        "Seed B Fig. 14: largest outer contact load of the front bearing "
-        "against speed for several preloads, thermally coupled.",
+        "Seed B Fig. 14: largest contact loads of the front bearing against "
+        "speed: (a) by preload, uncoupled; (b) 400 N, uncoupled against coupled; "
+        "(c) outer and (d) inner ring by preload, coupled and uncoupled.",
     ),
     (
-        r"seed_b_fig15_optimal_preload",
-        "Seed B Figs. 15-16: total radial displacement (load plus thermal) "
+        r"seed_b_fig15_radial_displacement",
+        "Seed B Fig. 15: (a) radial thermal displacement of the front bearing "
+        "against speed by preload; (b) radial displacement under the assumed "
+        "working load without thermal displacement against preload at 12,000 rpm.",
+    ),
+    (
+        r"seed_b_fig16_optimal_preload",
+        "Seed B Fig. 16: total radial displacement (load plus thermal) "
         "against preload at 12,000, 15,000 and 18,000 rpm under an assumed "
         "working load at the nose; the minimum is the optimal preload.",
     ),
@@ -249,23 +286,32 @@ CAPTIONS: list[tuple[str, str]] = [
         "(seed B: 17.92/26.40/35.38 um give 6.45/9.50/12.74 N).",
     ),
     (
+        r"seed_b_fig19_outer_ring_vs_measurement",
+        "Seed B Fig. 19: outer-ring temperatures of the front and rear bearings, "
+        "(a) against time at 12,000 rpm and (b) against speed, simulated, with "
+        "the two measured values seed B quotes (33.7 and 30.1 C).",
+    ),
+    (
         r"seed_b_campbell",
         "Seed B spindle: Campbell diagram (whirl frequencies of the lowest modes "
         "against speed, forward and backward) on bearing rows from the bearing "
         "solver at 400 N preload. Not a figure of the paper.",
     ),
     (
-        r"seed_b_vibration_vs_speed",
+        r"seed_b_fig21_vibration_vs_speed",
         "Seed B Fig. 21 counterpart: RMS shaft-end vibration velocity against "
         "speed, ceramic and steel spindles, uncoupled and thermally coupled, for "
         "an ISO 21940 G2.5 residual unbalance (seed B does not state its "
         "excitation, so the levels are not comparable, only the trends).",
     ),
     (
-        r"seed_b_spectrum_12000rpm",
-        "Seed B Fig. 20a counterpart: velocity spectrum at the tool nose at "
+        r"seed_b_fig20_spectrum_12000rpm",
+        "Seed B Fig. 20 counterpart: velocity spectrum at the tool nose at "
         "12,000 rpm from a time response with nonlinear ball forces (1X at "
-        "200 Hz).",
+        "200 Hz): (a) under the unbalance alone; (b) with the unbalanced "
+        "magnetic pull of an eccentric rotor on, the cause seed B gives for "
+        "its measured spectrum's excess at 1X and scatter near 2X (the "
+        "measured spectrum itself is not given as numbers).",
     ),
     (
         r"diagnose_fit_(?P<q>.+)",
@@ -297,8 +343,7 @@ CAPTIONS: list[tuple[str, str]] = [
     ),
     (
         r"diagnose_seed_b_synthetic_residuals",
-        "Seed B spindle, synthetic: residuals over sigma before and after the "
-        "accepted candidate.",
+        "Seed B spindle, synthetic: residuals over sigma before and after the accepted candidate.",
     ),
     (
         r"diagnose_seed_b_temperatures",
@@ -487,7 +532,9 @@ def on_files(files, config):
         index.append(f"| [{title}]({stem}.md) | {k} |")
         files.append(
             File.generated(
-                config, f"gallery/{stem}.md", content=_page_text(title, intro, folders, found, images)
+                config,
+                f"gallery/{stem}.md",
+                content=_page_text(title, intro, folders, found, images),
             )
         )
     index += [

@@ -9,7 +9,8 @@ Results are SI unless the name says otherwise.
 The package, bottom layer first (a module imports only from its own layer
 or below; ``tests/test_layout.py`` checks it):
 
-* ``errors``, ``config`` -- exceptions and system descriptions (TOML);
+* ``errors``, ``plausibility``, ``config`` -- exceptions, plausibility limits
+  and system descriptions (TOML);
 * ``bearing`` -- materials, the bearing solve; ``thermal`` -- heat, the
   thermal network, stiffness against speed; ``gear``, ``spindle``,
   ``rotor`` -- the machines;
@@ -32,6 +33,7 @@ from . import (
     diagnosis,
     errors,
     gear,
+    plausibility,
     plot,
     rotor,
     spindle,
@@ -61,6 +63,7 @@ from .errors import (
     ConvergenceError,
     DataError,
     Interrupted,
+    PlausibilityWarning,
     ThermalRunawayError,
     ThermobearError,
     ThreadsWarning,
@@ -76,6 +79,7 @@ from .gear import (
     regimes,
 )
 from .glossary import glossary
+from .plausibility import Limits, get_limits, limits, set_limits
 from .predict import (  # the function shadows the subpackage
     predict,
     regime_boundaries,
@@ -123,6 +127,7 @@ def effects(kind: "EffectKind | None" = None) -> "polars.DataFrame":
 __all__ = [
     # subpackages and modules, bottom layer first
     "errors",
+    "plausibility",
     "config",
     "bearing",
     "thermal",
@@ -138,9 +143,15 @@ __all__ = [
     "ConvergenceError",
     "DataError",
     "Interrupted",
+    "PlausibilityWarning",
     "ThermalRunawayError",
     "ThermobearError",
     "ThreadsWarning",
+    # plausibility limits
+    "Limits",
+    "get_limits",
+    "limits",
+    "set_limits",
     # system descriptions
     "load_config",
     "seed_config",

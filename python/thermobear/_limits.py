@@ -44,7 +44,14 @@ def cap_threads(threads: Optional[int]) -> Optional[int]:
     points at the first line outside thermobear."""
     if threads is None:
         return None
-    if isinstance(threads, bool) or int(threads) != threads or threads < 1:
+    from ._validate import is_number
+
+    if (
+        not is_number(threads)
+        or not threads - threads == 0
+        or int(threads) != threads
+        or threads < 1
+    ):
         raise ConfigError(
             f"invalid threads = {threads!r}: must be a whole number of at least 1 "
             "(or None for all cores)"

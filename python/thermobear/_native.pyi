@@ -213,6 +213,9 @@ class GearPair:
     def mesh_stiffness(
         self, points: int = 64, model: str = "potential-energy"
     ) -> dict[str, npt.NDArray[np.float64]]: ...
+    def tooth_pair_stiffness(
+        self, points: int = 256, model: str = "potential-energy"
+    ) -> dict[str, npt.NDArray[np.float64]]: ...
     def mesh_frequency_hz(self, speed_rpm: float) -> float: ...
 
 @final  # a native class: Python cannot subclass it
@@ -409,6 +412,12 @@ class Spindle:
     def effects(self) -> list[str]: ...
     def assumptions(self) -> dict[str, Any]: ...
     def steady_state(self, speed_rpm: float) -> dict[str, Any]: ...
+    def convection_coefficients(
+        self,
+        speeds_rpm: Sequence[float],
+        temperature_difference_k: float = 10.0,
+        temperatures_c: Sequence[Sequence[float]] | None = None,
+    ) -> tuple[list[str], npt.NDArray[np.float64]]: ...
     def isothermal(self, speed_rpm: float) -> tuple[dict[str, Any], dict[str, Any]]: ...
     def transient(
         self,
@@ -418,6 +427,7 @@ class Spindle:
         record_every: int = 1,
         initial_c: float | None = None,
         mechanics_update_k: float = 0.05,
+        progress: Callable[[int, int], Any] | None = None,
     ) -> dict[str, Any]: ...
     def grid(
         self,
@@ -439,8 +449,13 @@ class Spindle:
 # ambient_temperature_c, housing_material, raceway_control,
 # misalignment_rad, extra_heat_w, housing_conductance_scale,
 # churning_oil_fraction, heat_model, lubrication, skf_series,
-# sliding_friction_ehl, replenishment_krs, seal_moment_n_m), as
-# ``thermobear.thermal.state._model_kwargs`` builds it.
+# sliding_friction_ehl, replenishment_krs, seal_moment_n_m, and
+# ``oil_supply``: a dict with every key of
+# ``thermobear.thermal.oil_supply.SUPPLY_OPTIONS``, None where not given), as
+# ``thermobear.thermal.state._model_kwargs`` builds it. Every heat result
+# carries the heat split rolling_heat_w, sliding_heat_w, spin_heat_w,
+# drag_heat_w, ring_cage_churning_heat_w, seal_heat_w, extra_heat_w (they sum
+# to the total) and cavity_oil_fraction.
 def thermal_state(
     bearing: Bearing,
     speed_rpm: float,

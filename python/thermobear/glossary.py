@@ -4,9 +4,9 @@ name, unit and symbol.
 A name ends in its unit (``_n`` newton, ``_n_m`` newton metre, ``_m``,
 ``_mm``, ``_um``, ``_c`` deg C, ``_k`` kelvin difference, ``_w``, ``_rpm``,
 ``_hz``, ``_s``, ``_rad``, ``_deg``, ``_n_per_m``, ``_n_m_per_rad``,
-``_n_per_rad``, ``_cst`` mm^2/s). Every public parameter, result attribute
-and frame column that carries a unit is one of these names. The same table
-is docs/glossary.md (a test keeps the two equal).
+``_n_per_rad``, ``_cst`` mm^2/s, ``_w_per_m2_k`` W/(m^2 K)). Every public
+parameter, result attribute and frame column that carries a unit is one of
+these names. The same table is docs/glossary.md (a test keeps the two equal).
 """
 
 from __future__ import annotations
@@ -146,10 +146,53 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("tilt_rad", "rad", "theta", "tilt of the inner ring"),
     ("misalignment_rad", "rad", "theta_0", "inner-ring tilt held fixed (None: free)"),
     (
+        "max_contact_pressure_mpa",
+        "MPa",
+        "p_0,lim",
+        "plausibility limit: maximum Hertz contact pressure (ISO 76 static limit)",
+    ),
+    ("max_misalignment_rad", "rad", "theta_lim", "plausibility limit: inner-ring tilt"),
+    (
+        "youngs_modulus_mpa",
+        "MPa",
+        "E",
+        "Young's modulus of the gear material (seed A table, N/mm^2)",
+    ),
+    (
+        "max_ndm_grease_mm_rpm",
+        "mm rpm",
+        "(n dm)_lim",
+        "plausibility limit: speed factor n dm, grease",
+    ),
+    (
+        "max_ndm_oil_bath_mm_rpm",
+        "mm rpm",
+        "(n dm)_lim",
+        "plausibility limit: speed factor n dm, oil bath",
+    ),
+    (
+        "max_ndm_oil_mist_mm_rpm",
+        "mm rpm",
+        "(n dm)_lim",
+        "plausibility limit: speed factor n dm, oil mist",
+    ),
+    (
+        "max_ndm_oil_air_mm_rpm",
+        "mm rpm",
+        "(n dm)_lim",
+        "plausibility limit: speed factor n dm, oil-air",
+    ),
+    (
+        "max_ndm_jet_mm_rpm",
+        "mm rpm",
+        "(n dm)_lim",
+        "plausibility limit: speed factor n dm, oil jet",
+    ),
+    (
         "mechanical_radial_displacement_um",
         "um",
         "delta_r,mech",
-        "radial displacement under load, cold geometry at speed",
+        "radial displacement along the load (+ with it), cold geometry at speed",
     ),
     (
         "thermal_radial_displacement_um",
@@ -172,6 +215,92 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("spring_compression_um", "um", "u_s", "compression of the preload spring"),
     ("axial_growth_um", "um", "u_a", "axial thermal growth of the spindle shaft"),
     ("ball_growth_um", "um", "dD", "thermal growth of the ball diameter"),
+    (
+        "rear_thermal_radial_displacement_um",
+        "um",
+        "delta_r,th,rear",
+        "radial thermal displacement of the rear bearing",
+    ),
+    (
+        "front_axial_thermal_displacement_um",
+        "um",
+        "delta_a,th,front",
+        "axial thermal offset of the front bearing's groove centres (positive: more interference)",
+    ),
+    (
+        "rear_axial_thermal_displacement_um",
+        "um",
+        "delta_a,th,rear",
+        "axial thermal offset of the rear bearing's groove centres (positive: more interference)",
+    ),
+    (
+        "front_inner_groove_centre_um",
+        "um",
+        "u_ic,front",
+        "radial thermal growth of the front inner groove centre",
+    ),
+    (
+        "front_outer_groove_centre_um",
+        "um",
+        "u_oc,front",
+        "radial thermal growth of the front outer groove centre",
+    ),
+    (
+        "rear_inner_groove_centre_um",
+        "um",
+        "u_ic,rear",
+        "radial thermal growth of the rear inner groove centre",
+    ),
+    (
+        "rear_outer_groove_centre_um",
+        "um",
+        "u_oc,rear",
+        "radial thermal growth of the rear outer groove centre",
+    ),
+    ("rear_ball_growth_um", "um", "dD,rear", "thermal growth of the rear bearing's ball diameter"),
+    (
+        "inner_contact_angle_isothermal_deg",
+        "deg",
+        "alpha_i,iso",
+        "inner contact angle without thermal effects",
+    ),
+    (
+        "outer_contact_angle_isothermal_deg",
+        "deg",
+        "alpha_o,iso",
+        "outer contact angle without thermal effects",
+    ),
+    (
+        "inner_load_max_isothermal_n",
+        "N",
+        "Q_i,max,iso",
+        "largest inner-raceway contact load without thermal effects",
+    ),
+    (
+        "outer_load_max_isothermal_n",
+        "N",
+        "Q_o,max,iso",
+        "largest outer-raceway contact load without thermal effects",
+    ),
+    (
+        "film_coefficient_w_per_m2_k",
+        "W/(m^2 K)",
+        "h",
+        "convection film coefficient of a thermal-network link",
+    ),
+    (
+        "temperature_difference_k",
+        "K",
+        "dT_h",
+        "temperature difference across a natural-convection link",
+    ),
+    (
+        "axial_position_mm",
+        "mm",
+        "z",
+        "axial position along the spindle (0: front pair centre, towards the rear)",
+    ),
+    ("radial_position_mm", "mm", "r", "radial position from the spindle axis"),
     (
         "radial_thermal_offset_um",
         "um",
@@ -279,6 +408,36 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ),
     ("lubrication_factor_f0", "1", "f0", "Palmgren lubrication factor of the viscous moment"),
     ("churning_oil_fraction", "1", "X", "oil volume fraction of the oil-air mixture"),
+    (
+        "rolling_heat_w",
+        "W",
+        "H_r",
+        "rolling heat of a bearing (Palmgren: omega (M1 + Mv); SKF: omega M_rr)",
+    ),
+    ("sliding_heat_w", "W", "H_sl", "sliding heat of a bearing (SKF: omega M_sl; Palmgren: 0)"),
+    ("drag_heat_w", "W", "H_d", "drag heat: balls in the oil-air mixture, or the oil-bath drag"),
+    ("ring_cage_churning_heat_w", "W", "H_ch", "churning heat of the rings and the cage"),
+    ("seal_heat_w", "W", "H_seal", "seal friction heat"),
+    ("cavity_oil_fraction", "1", "X", "oil volume fraction of the bearing cavity used by the drag"),
+    ("oil_flow_cm3_per_min", "cm^3/min", "W_oil", "jet oil flow into the bearing"),
+    ("jet_count", "1", "n_jet", "number of oil jets"),
+    ("jet_velocity_m_per_s", "m/s", "v_jet", "oil jet velocity"),
+    (
+        "oil_volume_cm3_per_h",
+        "cm^3/h",
+        "V_oil",
+        "oil volume per hour of an oil-air or oil-mist supply",
+    ),
+    ("air_flow_l_per_min", "l/min", "Q_air", "carrier air flow of an oil-air or oil-mist supply"),
+    ("oil_level_mm", "mm", "H", "static oil-bath level above the lowest point of the lowest ball"),
+    ("grease_fill_fraction", "1", "f_g", "share of the free volume filled with grease"),
+    ("oil_flow_scale", "1", "s_W", "scale on the oil flow reaching the cavity"),
+    (
+        "cavity_fraction_speed_exponent",
+        "1",
+        "e_n",
+        "speed exponent of the cavity oil fraction (Parker: 1)",
+    ),
     ("housing_conductance_scale", "1", "s_h", "scale of the housing-to-ambient conductance"),
     ("time_s", "s", "t", "time"),
     ("duration_s", "s", "t_end", "duration of a transient"),
@@ -356,7 +515,14 @@ GLOSSARY: dict[str, Entry] = {name: Entry(u, s, d) for name, u, s, d in _ROWS}
 
 #: Unit suffix tokens, longest first (a name ends in one of them).
 UNIT_SUFFIXES: tuple[str, ...] = (
+    "_w_per_m2_k",
+    "_cm3_per_min",
+    "_cm3_per_h",
+    "_l_per_min",
+    "_m_per_s",
     "_n_m_per_rad",
+    "_mm_rpm",
+    "_mpa",
     "_n_per_rad",
     "_n_per_um",
     "_n_per_m",

@@ -78,6 +78,10 @@ pub(crate) struct SpeedContext {
     traction: f64,
 }
 
+/// Shaft speed below which the speed effects are dropped [rad/s] (about
+/// 1e-8 rpm: a ball's centrifugal force there is below 1e-20 N).
+const NEGLIGIBLE_SPEED_RAD_S: f64 = 1e-9;
+
 impl SpeedContext {
     /// Contact angle difference a_i - a_o of a ball that slides against its
     /// gyroscopic moment (couple = mu (Q_i + Q_o) D / 2): the force balance
@@ -102,7 +106,14 @@ impl SpeedContext {
 
     pub(crate) fn new(model: &BearingModel, speed_rpm: f64, opts: &SolveOptions) -> Result<Self> {
         crate::error::finite("speed_rpm", speed_rpm)?;
-        let omega_i = rpm_to_rad_s(speed_rpm);
+        // Below NEGLIGIBLE_SPEED_RAD_S the speed effects (centrifugal force
+        // and gyroscopic moment, both ~ omega^2) are far below the resolution
+        // of the contact forces, and their products underflow: the state is
+        // the zero-speed one.
+        let omega_i = match rpm_to_rad_s(speed_rpm) {
+            w if w.abs() < NEGLIGIBLE_SPEED_RAD_S => 0.0,
+            w => w,
+        };
         let (lam_i, lam_o) = opts.raceway_control.lambdas();
         let u_r = if opts.effects.has(Effect::RingCentrifugalExpansion) {
             model.ring_expansion_m(omega_i)

@@ -14,6 +14,20 @@ pub enum RacewayControl {
 }
 
 impl RacewayControl {
+    /// The control of a name: "outer" or "inner" (a `ConfigError` naming
+    /// `raceway_control` otherwise).
+    pub fn from_name(name: &str) -> crate::error::Result<Self> {
+        match name {
+            "outer" => Ok(RacewayControl::Outer),
+            "inner" => Ok(RacewayControl::Inner),
+            other => Err(crate::error::Error::config(
+                "raceway_control",
+                other,
+                "must be \"outer\" or \"inner\"",
+            )),
+        }
+    }
+
     /// (lambda_i, lambda_o) of A-15.
     pub fn lambdas(self) -> (f64, f64) {
         match self {

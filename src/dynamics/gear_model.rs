@@ -272,6 +272,15 @@ pub struct HelicalPairParams {
     pub transmission_error_m: Vec<f64>,
 }
 
+/// Mean mesh stiffness of the fixture [`HelicalPairParams::seed_a`] [N/m]:
+/// 6.0e8 N/m, a round value between the two models of `crate::gear` for the
+/// seed pair along the transverse line of action: ISO 6336-1 method B
+/// c_gamma_alpha b = 16.6 N/(mm um) x 33 mm = 5.5e8 N/m and the
+/// potential-energy mean 6.6e8 N/m (tested). The Python preset
+/// `seed-electric-drive` does not use it: it computes the potential-energy
+/// table (9.0e8 N/m in the normal direction of A-45).
+pub const SEED_A_FIXTURE_MESH_STIFFNESS_N_PER_M: f64 = 6.0e8;
+
 impl HelicalPairParams {
     /// Seed A, Table 3 (first gear pair): z = 29/78, m_n = 1.537 mm,
     /// alpha_n = 16.5 deg, beta = 31.2 deg, masses 1.201/3.1 kg, inertias
@@ -280,8 +289,8 @@ impl HelicalPairParams {
     /// tan alpha_t = tan alpha_n / cos beta; phi = alpha_t (centres on a
     /// horizontal line). A gives no backlash, damping, TE or stiffness values;
     /// documented defaults (docs/concepts/physics.md §8): b = 50 um, zeta_m = 0.07,
-    /// bearing zeta = 0.02, mean mesh stiffness 6.0e8 N/m (ISO 6336-1
-    /// c_gamma ~ 20 N/(mm um) x 33 mm face width) with a +-10 % harmonic
+    /// bearing zeta = 0.02, mean mesh stiffness
+    /// [`SEED_A_FIXTURE_MESH_STIFFNESS_N_PER_M`] with a +-10 % harmonic
     /// variation, TE amplitude 2 um, Kr = 2e8 N/m, Ka = 5e7 N/m, 100 N m.
     pub fn seed_a() -> Self {
         let beta = 31.2f64.to_radians();
@@ -307,7 +316,9 @@ impl HelicalPairParams {
             mesh_damping_ratio: 0.07,
             mesh_damping: MeshDamping::InContact,
             input_torque_n_m: 100.0,
-            mesh_stiffness_n_per_m: (0..n).map(|k| 6.0e8 * (1.0 + 0.1 * ph(k).cos())).collect(),
+            mesh_stiffness_n_per_m: (0..n)
+                .map(|k| SEED_A_FIXTURE_MESH_STIFFNESS_N_PER_M * (1.0 + 0.1 * ph(k).cos()))
+                .collect(),
             transmission_error_m: (0..n).map(|k| 2.0e-6 * ph(k).sin()).collect(),
         }
     }
@@ -697,6 +708,46 @@ impl OdeSystem<14> for HelicalPairSystem {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The number written in the source right after `marker` (first token).
+    fn quoted(src: &str, marker: &str) -> f64 {
+        let at = src.find(marker).unwrap_or_else(|| panic!("{marker:?} not in the doc")) + marker.len();
+        let tok: String = src[at..]
+            .trim_start()
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || *c == '.' || *c == 'e' || *c == '-')
+            .collect();
+        tok.parse()
+            .unwrap_or_else(|_| panic!("no number after {marker:?}: {tok:?}"))
+    }
+
+    #[test]
+    fn fixture_mesh_stiffness_doc_quotes_the_values_the_code_computes() {
+        use crate::gear::{iso_stiffness, GearPair, IsoStiffnessOptions, MeshStiffness};
+        let src = include_str!("gear_model.rs");
+        let before = &src[..src.find("pub const SEED_A_FIXTURE_MESH_STIFFNESS_N_PER_M").unwrap()];
+        let doc = &before[before.rfind("\n\n").unwrap()..];
+        let p = HelicalPairParams::seed_a();
+        let mean = p.mesh_stiffness_n_per_m.iter().sum::<f64>() / p.mesh_stiffness_n_per_m.len() as f64;
+        assert!((mean / SEED_A_FIXTURE_MESH_STIFFNESS_N_PER_M - 1.0).abs() < 1e-12);
+        assert_eq!(quoted(doc, "[N/m]:\n///"), SEED_A_FIXTURE_MESH_STIFFNESS_N_PER_M);
+        let pair = GearPair::preset("seed-electric-drive").unwrap();
+        let iso = iso_stiffness(&pair, &IsoStiffnessOptions::default()).unwrap();
+        let pe = MeshStiffness::potential_energy(&pair).unwrap();
+        let pe_normal = pe.normal_direction(&pair).unwrap().mean_n_per_m();
+        let c = quoted(doc, "c_gamma_alpha b =");
+        let width = quoted(doc, "N/(mm um) x");
+        let product = quoted(doc, "mm =");
+        // Each quoted figure is the code's value to its printed digits.
+        let close = |q: f64, v: f64, what: &str| assert!((q / v - 1.0).abs() < 0.01, "{what}: doc {q}, code {v}");
+        close(c, iso.mesh_alpha_n_per_mm_um, "c_gamma_alpha");
+        close(width, pair.spec.face_width_m * 1e3, "face width");
+        close(product, c * width * 1e6, "product");
+        close(product, iso.mesh_alpha_n_per_m(), "ISO total");
+        close(quoted(doc, "potential-energy mean"), pe.mean_n_per_m(), "PE mean");
+        close(quoted(doc, "table ("), pe_normal, "PE normal mean");
+        assert!(iso.mesh_alpha_n_per_m() < mean && mean < pe.mean_n_per_m());
+    }
 
     #[test]
     fn backlash_oscillator_validates_and_has_static_contact_solution() {

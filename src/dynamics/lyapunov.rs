@@ -85,6 +85,7 @@ pub fn largest_lyapunov_benettin<const N: usize, S: GridOde<N>>(
     let mut sum_log = 0.0;
     let mut done = 0;
     while done < cfg.measure_steps {
+        crate::cancel::check()?;
         let chunk = cfg.renorm_steps.min(cfg.measure_steps - done);
         for _ in 0..chunk {
             sys.rk4_step_pair(n, &mut x, &mut y);
@@ -199,6 +200,7 @@ pub fn largest_lyapunov_blocks<const N: usize, S: GridOde<N>>(
     loop {
         let mut sum_log = 0.0;
         for _ in 0..cfg.renorms_per_block {
+            crate::cancel::check()?;
             for _ in 0..cfg.renorm_steps {
                 sys.rk4_step_pair(n, &mut x, &mut y);
                 n = (n + 1) % per;
@@ -264,6 +266,7 @@ pub fn largest_lyapunov_variational<const N: usize, S: OdeSystem<N>>(
     let mut sum_log = 0.0;
     let mut done = 0;
     while done < cfg.measure_steps {
+        crate::cancel::check()?;
         let chunk = cfg.renorm_steps.min(cfg.measure_steps - done);
         for _ in 0..chunk {
             tangent_rk4_step(sys, t, h, &mut x, &mut v);

@@ -385,28 +385,97 @@ pub struct MeshStiffness {
     pub model: StiffnessModel,
 }
 
-fn mesh_table(pair: &GearPair, path: &PathTable, points: usize) -> Vec<f64> {
-    let g = &pair.geometry;
+/// One tooth pair's stiffness over the face width with its front-face
+/// contact at s0 on the path: int_0^b k_pair(s0 - z tan(beta_b)) dz [N/m].
+fn tooth_pair_at(pair: &GearPair, path: &PathTable, s0: f64) -> f64 {
     let b = pair.spec.face_width_m;
-    let pbt = g.transverse_base_pitch_m;
-    let tb = g.base_helix_angle_rad.tan();
+    let tb = pair.geometry.base_helix_angle_rad.tan();
     let stagger = b * tb;
-    let j_max = ((g.path_of_contact_m + stagger) / pbt).ceil() as usize + 1;
+    if stagger < 1e-12 * pair.geometry.transverse_base_pitch_m {
+        b * path.value(s0)
+    } else {
+        (path.integral(s0) - path.integral(s0 - stagger)) / tb
+    }
+}
+
+/// Length of one tooth pair's engagement on the plane of action, the path
+/// of contact plus the helical stagger b tan(beta_b) [m].
+fn engagement_m(pair: &GearPair) -> f64 {
+    let g = &pair.geometry;
+    g.path_of_contact_m + pair.spec.face_width_m * g.base_helix_angle_rad.tan()
+}
+
+fn mesh_table(pair: &GearPair, path: &PathTable, points: usize) -> Vec<f64> {
+    let pbt = pair.geometry.transverse_base_pitch_m;
+    let j_max = (engagement_m(pair) / pbt).ceil() as usize + 1;
     (0..points)
         .map(|i| {
             let front = i as f64 / points as f64 * pbt;
             (0..=j_max)
-                .map(|j| {
-                    let s0 = front + j as f64 * pbt;
-                    if stagger < 1e-12 * pbt {
-                        b * path.value(s0)
-                    } else {
-                        (path.integral(s0) - path.integral(s0 - stagger)) / tb
-                    }
-                })
+                .map(|j| tooth_pair_at(pair, path, front + j as f64 * pbt))
                 .sum()
         })
         .collect()
+}
+
+/// k_pair along the path of contact from the potential-energy tooth model.
+fn potential_energy_path(pair: &GearPair, opts: &MeshOptions) -> Result<PathTable> {
+    let ga = pair.geometry.path_of_contact_m;
+    let n = opts.path_points;
+    let k = (0..n)
+        .map(|i| {
+            let s = ga * i as f64 / (n - 1) as f64;
+            pair_compliance(pair, s, opts.quadrature_intervals).map(|c| c.stiffness_n_per_m_per_m())
+        })
+        .collect::<Result<Vec<f64>>>()?;
+    if let Some(bad) = k.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
+        return Err(Error::config(
+            "tooth_pair_stiffness_n_per_m_per_m",
+            bad,
+            "the energy method gave a non-positive stiffness for this geometry",
+        ));
+    }
+    Ok(PathTable::new(ga, k))
+}
+
+/// One tooth pair's stiffness along the transverse line of action over its
+/// whole engagement, as its contact enters at the start of the path of
+/// contact (approach), crosses the pitch point and leaves it (recess):
+/// `points` pairs `[x / p_bt, k_1(x)]` for x = 0 .. path of contact +
+/// b tan(beta_b), in mesh periods (one mesh period = one base pitch of
+/// roll) and N/m. The mesh stiffness is their parallel sum over the pairs in
+/// mesh, k_m(phase) = sum_j k_1((phase + j) p_bt), exactly what
+/// [`MeshStiffness::potential_energy_with`] (`iso = None`) or
+/// [`MeshStiffness::iso_contact_line`] (`iso = Some`) tabulate.
+pub fn tooth_pair_stiffness(
+    pair: &GearPair,
+    iso: Option<&IsoStiffness>,
+    opts: &MeshOptions,
+    points: usize,
+) -> Result<Vec<[f64; 2]>> {
+    check_options(opts)?;
+    if points < 2 {
+        return Err(Error::config(
+            "points",
+            points,
+            "at least 2 points along the engagement",
+        ));
+    }
+    let path = match iso {
+        None => potential_energy_path(pair, opts)?,
+        Some(iso) => {
+            let c = positive("single_stiffness_n_per_m_per_m", iso.single_n_per_m_per_m())?;
+            PathTable::new(pair.geometry.path_of_contact_m, vec![c, c])
+        }
+    };
+    let pbt = pair.geometry.transverse_base_pitch_m;
+    let len = engagement_m(pair);
+    Ok((0..points)
+        .map(|i| {
+            let x = len * i as f64 / (points - 1) as f64;
+            [x / pbt, tooth_pair_at(pair, &path, x)]
+        })
+        .collect())
 }
 
 fn check_options(opts: &MeshOptions) -> Result<()> {
@@ -436,22 +505,7 @@ impl MeshStiffness {
     /// Potential-energy mesh stiffness (module docs).
     pub fn potential_energy_with(pair: &GearPair, opts: &MeshOptions) -> Result<Self> {
         check_options(opts)?;
-        let ga = pair.geometry.path_of_contact_m;
-        let n = opts.path_points;
-        let k = (0..n)
-            .map(|i| {
-                let s = ga * i as f64 / (n - 1) as f64;
-                pair_compliance(pair, s, opts.quadrature_intervals).map(|c| c.stiffness_n_per_m_per_m())
-            })
-            .collect::<Result<Vec<f64>>>()?;
-        if let Some(bad) = k.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
-            return Err(Error::config(
-                "tooth_pair_stiffness_n_per_m_per_m",
-                bad,
-                "the energy method gave a non-positive stiffness for this geometry",
-            ));
-        }
-        let path = PathTable::new(ga, k);
+        let path = potential_energy_path(pair, opts)?;
         Ok(MeshStiffness {
             table_n_per_m: mesh_table(pair, &path, opts.table_points),
             model: StiffnessModel::PotentialEnergy,
@@ -655,6 +709,43 @@ mod tests {
     use super::*;
     use crate::gear::geometry::{GearPairSpec, WheelSpec};
     use crate::gear::iso6336::{iso_stiffness, IsoStiffnessOptions};
+
+    #[test]
+    fn tooth_pair_curves_sum_to_the_mesh_stiffness() {
+        // Seed A's helical pair: one tooth pair engages over eps_alpha +
+        // eps_beta mesh periods, rises from zero on approach and falls to zero
+        // on recess; shifted by whole mesh periods and summed (pairs in
+        // parallel) it gives the tabulated mesh stiffness.
+        let pair = GearPair::preset("seed-electric-drive").unwrap();
+        let opts = MeshOptions::default();
+        let n = 4001;
+        let curve = tooth_pair_stiffness(&pair, None, &opts, n).unwrap();
+        let len = curve[n - 1][0];
+        let g = &pair.geometry;
+        assert!(
+            (len - g.transverse_contact_ratio - g.overlap_ratio).abs() < 1e-9,
+            "{len}"
+        );
+        assert!(curve[0][1].abs() < 1e-9 * curve[n / 2][1] && curve[n - 1][1].abs() < 1e-9 * curve[n / 2][1]);
+        let k1 = |x: f64| {
+            if !(0.0..=len).contains(&x) {
+                return 0.0;
+            }
+            let t = x / len * (n - 1) as f64;
+            let i = (t.floor() as usize).min(n - 2);
+            curve[i][1] + (t - i as f64) * (curve[i + 1][1] - curve[i][1])
+        };
+        let km = MeshStiffness::potential_energy_with(&pair, &opts).unwrap();
+        for phase in [0.0, 0.13, 0.5, 0.77] {
+            let sum: f64 = (0..8).map(|j| k1(phase + j as f64)).sum();
+            assert!(
+                (sum / km.at(phase) - 1.0).abs() < 1e-4,
+                "phase {phase}: {sum} vs {}",
+                km.at(phase)
+            );
+        }
+        assert!(tooth_pair_stiffness(&pair, None, &opts, 1).is_err());
+    }
 
     fn spur(z1: u32, z2: u32, module_mm: f64, face_mm: f64) -> GearPair {
         GearPair::new(GearPairSpec {

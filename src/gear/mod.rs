@@ -18,5 +18,5 @@ pub mod torsional;
 
 pub use geometry::{GearGeometry, GearPair, GearPairSpec, TableGearData, ToothForces, TypoWarning, WheelSpec};
 pub use iso6336::{iso_stiffness, GearBlank, IsoStiffness, IsoStiffnessOptions};
-pub use mesh::{MeshOptions, MeshStiffness, StiffnessModel, TransmissionError};
+pub use mesh::{tooth_pair_stiffness, MeshOptions, MeshStiffness, StiffnessModel, TransmissionError};
 pub use torsional::TorsionalMesh;

@@ -182,8 +182,9 @@ pub struct ThermalSummary {
     heat_w: f64,
     load_heat_w: f64,
     viscous_heat_w: f64,
-    spin_heat_w: f64,
     churning_w: f64,
+    breakdown: crate::thermal::friction::HeatBreakdown,
+    cavity_oil_fraction: f64,
     radial_thermal_offset_m: f64,
     axial_thermal_offset_m: f64,
     ball_growth_m: f64,
@@ -217,8 +218,9 @@ pub fn thermal_point(c: &CoupledBearing, speed_rpm: f64, axial_n: f64, radial_n:
         heat_w: h.heat.total_w(),
         load_heat_w: h.load_w,
         viscous_heat_w: h.viscous_w,
-        spin_heat_w: h.heat.inner_spin_w + h.heat.outer_spin_w,
         churning_w: h.churning_w,
+        breakdown: h.breakdown,
+        cavity_oil_fraction: h.cavity_oil_fraction,
         radial_thermal_offset_m: s.raceway_offsets.radial_m,
         axial_thermal_offset_m: s.raceway_offsets.axial_m,
         ball_growth_m: s.offsets.ball_diameter_growth_m,
@@ -244,8 +246,13 @@ pub fn thermal_columns<'py>(py: Python<'py>, results: &[Result<ThermalSummary>])
     set("heat_w", col(&|t| t.heat_w))?;
     set("load_heat_w", col(&|t| t.load_heat_w))?;
     set("viscous_heat_w", col(&|t| t.viscous_heat_w))?;
-    set("spin_heat_w", col(&|t| t.spin_heat_w))?;
     set("churning_w", col(&|t| t.churning_w))?;
+    // The heat split (rolling, sliding, spin, drag, churning, seal, extra).
+    let zero = crate::thermal::friction::HeatBreakdown::default();
+    for (j, (key, _)) in super::thermal::breakdown_columns(&zero).iter().enumerate() {
+        set(key, col(&|t| super::thermal::breakdown_columns(&t.breakdown)[j].1))?;
+    }
+    set("cavity_oil_fraction", col(&|t| t.cavity_oil_fraction))?;
     set("radial_thermal_offset_um", col(&|t| t.radial_thermal_offset_m * 1e6))?;
     set("axial_thermal_offset_um", col(&|t| t.axial_thermal_offset_m * 1e6))?;
     set("ball_growth_um", col(&|t| t.ball_growth_m * 1e6))?;

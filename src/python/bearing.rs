@@ -397,7 +397,7 @@ pub fn check_config(text: &str) -> PyResult<Vec<String>> {
         s.push("bearing".to_string());
     }
     if sys.model.is_some() {
-        sys.effects().py_err()?;
+        sys.solve_options().py_err()?;
         s.push("model".into());
     }
     if sys.sweep.is_some() {

@@ -33,8 +33,8 @@ use crate::dynamics::{
 };
 use crate::error::{finite, positive, Error, Result};
 use crate::gear::{
-    iso_stiffness, GearPair, GearPairSpec, IsoStiffnessOptions, MeshOptions, MeshStiffness, TableGearData,
-    TransmissionError, TypoWarning, WheelSpec,
+    iso_stiffness, tooth_pair_stiffness, GearPair, GearPairSpec, IsoStiffnessOptions, MeshOptions, MeshStiffness,
+    TableGearData, TransmissionError, TypoWarning, WheelSpec,
 };
 
 /// Poll interval of the watching (GIL-holding) thread [ms].
@@ -295,6 +295,48 @@ impl PyGearPair {
         d.set_item("mesh_phase", phase.into_pyarray(py))?;
         d.set_item("transverse_stiffness_n_per_m", k.samples(points).into_pyarray(py))?;
         d.set_item("normal_stiffness_n_per_m", kn.samples(points).into_pyarray(py))?;
+        Ok(d)
+    }
+
+    /// One tooth pair's stiffness over its engagement (approach, pitch
+    /// point, recess) at `points` positions: `mesh_cycles` (roll in mesh
+    /// periods from entering the path of contact), transverse and normal
+    /// stiffness; the mesh stiffness is their sum over the pairs in mesh.
+    #[pyo3(signature = (points=256, model="potential-energy"))]
+    fn tooth_pair_stiffness<'py>(&self, py: Python<'py>, points: usize, model: &str) -> PyResult<Bound<'py, PyDict>> {
+        let inner = self.inner.clone();
+        let iso = match model {
+            "potential-energy" => None,
+            "iso" => Some(iso_stiffness(&inner, &IsoStiffnessOptions::default()).py_err()?),
+            other => {
+                return Err(Error::config(
+                    "mesh_model",
+                    other,
+                    "must be \"potential-energy\" or \"iso\"",
+                ))
+                .py_err()
+            }
+        };
+        let rows = py
+            .detach(move || tooth_pair_stiffness(&inner, iso.as_ref(), &MeshOptions::default(), points))
+            .py_err()?;
+        let to_normal = 1.0 / self.inner.spec.helix_angle_rad.cos().powi(2);
+        let d = PyDict::new(py);
+        d.set_item(
+            "mesh_cycles",
+            rows.iter().map(|r| r[0]).collect::<Vec<f64>>().into_pyarray(py),
+        )?;
+        d.set_item(
+            "transverse_stiffness_n_per_m",
+            rows.iter().map(|r| r[1]).collect::<Vec<f64>>().into_pyarray(py),
+        )?;
+        d.set_item(
+            "normal_stiffness_n_per_m",
+            rows.iter()
+                .map(|r| r[1] * to_normal)
+                .collect::<Vec<f64>>()
+                .into_pyarray(py),
+        )?;
         Ok(d)
     }
 
@@ -1251,7 +1293,7 @@ pub fn largest_lyapunov_reference(
     };
     let method = method.to_string();
     let name = name.to_string();
-    py.detach(move || -> Result<f64> {
+    super::parallel::watched(py, 1, None, move |_, _| -> Result<f64> {
         match (name.as_str(), method.as_str()) {
             ("lorenz", "benettin") => {
                 let g = Gridded::new(Lorenz::classic(), h, 1);
@@ -1272,7 +1314,7 @@ pub fn largest_lyapunov_reference(
             }
             (_, m) => Err(Error::config("method", m, "must be \"benettin\" or \"variational\"")),
         }
-    })
+    })?
     .py_err()
 }
 
@@ -1305,32 +1347,31 @@ pub fn largest_lyapunov_gear(
         .py_err();
     }
     let pair = system.pair_at(speed_rpm)?;
-    let est = py
-        .detach(move || -> Result<(f64, f64, usize, f64)> {
-            let sys = pair.system(speed_rpm, steps_per_period)?;
-            let mut x0 = pair.static_state()?;
-            crate::dynamics::integrate::rk4_advance(&sys, &mut x0, 0, transient_periods * steps_per_period);
-            // Scales: backlash for displacements, backlash x mesh frequency for velocities.
-            let b = pair.params().half_backlash_m;
-            let v = b / sys.period_s();
-            let mut scale = [b; 14];
-            for s in scale.iter_mut().skip(7) {
-                *s = v;
-            }
-            let blocks = periods / block_periods;
-            let cfg = LyapunovBlocks {
-                renorm_steps: steps_per_period,
-                renorms_per_block: block_periods,
-                min_blocks: blocks,
-                max_blocks: blocks,
-                separation: 1e-6,
-                sigmas: 0.0,
-                threshold: 0.0,
-            };
-            let e = largest_lyapunov_blocks(&sys, &x0, 0, &scale, &cfg, |_| {})?;
-            Ok((e.exponent, e.standard_error, e.blocks, sys.period_s()))
-        })
-        .py_err()?;
+    let est = super::parallel::watched(py, 1, None, move |_, _| -> Result<(f64, f64, usize, f64)> {
+        let sys = pair.system(speed_rpm, steps_per_period)?;
+        let mut x0 = pair.static_state()?;
+        crate::dynamics::integrate::rk4_advance(&sys, &mut x0, 0, transient_periods * steps_per_period);
+        // Scales: backlash for displacements, backlash x mesh frequency for velocities.
+        let b = pair.params().half_backlash_m;
+        let v = b / sys.period_s();
+        let mut scale = [b; 14];
+        for s in scale.iter_mut().skip(7) {
+            *s = v;
+        }
+        let blocks = periods / block_periods;
+        let cfg = LyapunovBlocks {
+            renorm_steps: steps_per_period,
+            renorms_per_block: block_periods,
+            min_blocks: blocks,
+            max_blocks: blocks,
+            separation: 1e-6,
+            sigmas: 0.0,
+            threshold: 0.0,
+        };
+        let e = largest_lyapunov_blocks(&sys, &x0, 0, &scale, &cfg, |_| {})?;
+        Ok((e.exponent, e.standard_error, e.blocks, sys.period_s()))
+    })?
+    .py_err()?;
     let t = mesh_period(system.sweep.pair.params().pinion_teeth, speed_rpm);
     let mut d = BTreeMap::new();
     d.insert("lyapunov_per_s", est.0);

@@ -8,6 +8,7 @@ pub mod bearing;
 pub mod defaults;
 pub mod errors;
 pub mod gear;
+pub mod oil_supply;
 pub mod parallel;
 pub mod persist;
 pub mod rotor;

@@ -110,19 +110,21 @@ pub fn report(cb: &Bound<'_, PyAny>, done: usize, total: usize) -> PyResult<()> 
 /// `stop`, which `work` reads between its items and the core's long loops
 /// read through `crate::cancel` (the worker runs with `stop` as its cancel
 /// flag), and once `work` returns raises the stop's exception. Without a stop, `progress(total, total)`
-/// closes the run (when not already reported).
+/// closes the run (when not already reported). `done` is also the worker's
+/// step counter (`crate::cancel::advance`): a single long item (a
+/// transient) reports its time steps through it.
 pub fn watched<R, W>(py: Python<'_>, total: usize, progress: Option<&Bound<'_, PyAny>>, work: W) -> PyResult<R>
 where
     R: Send,
     W: FnOnce(&Arc<AtomicBool>, &AtomicUsize) -> R + Send,
 {
     let stop = Arc::new(AtomicBool::new(false));
-    let done = AtomicUsize::new(0);
+    let done = Arc::new(AtomicUsize::new(0));
     let (tx, rx) = std::sync::mpsc::channel::<R>();
     std::thread::scope(|scope| -> PyResult<R> {
         let (stop, done) = (&stop, &done);
         scope.spawn(move || {
-            let res = crate::cancel::with_flag(stop, || work(stop, done));
+            let res = crate::cancel::with_flag(stop, || crate::cancel::with_progress(done, || work(stop, done)));
             // The receiver outlives this thread (joined at the end of the scope).
             let _ = tx.send(res);
         });

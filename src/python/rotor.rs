@@ -184,10 +184,20 @@ fn rotor_critical_speeds<'py>(
     offsets: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let sp = speeds(&speeds_rpm).py_err()?;
+    crate::error::positive("harmonic", harmonic).py_err()?;
+    if modes == 0 {
+        return Err(Error::config("modes", 0, "ask for at least one mode")).py_err();
+    }
     let off = offsets_arg(offsets)?;
-    let c = py
-        .detach(|| build(row_material, preload_n, effects, off)?.critical_speeds(&sp, modes, harmonic))
-        .py_err()?;
+    let s = py.detach(|| build(row_material, preload_n, effects, off)).py_err()?;
+    // One speed per item (each independent, as in one Campbell diagram):
+    // Ctrl-C skips the speeds not started.
+    let pts = map_interruptible(py, &sp, None, None, |&n| s.campbell(&[n], modes))?;
+    let mut points = Vec::with_capacity(pts.len());
+    for p in pts {
+        points.extend(p.py_err()?.points);
+    }
+    let c = crate::rotor::modal::CampbellDiagram { points }.critical_speeds(harmonic);
     let d = PyDict::new(py);
     d.set_item(
         "speed_rpm",

@@ -20,17 +20,7 @@ pub fn solve_options(effects: Option<Vec<String>>, raceway_control: &str) -> Res
     if let Some(names) = effects {
         o.effects = EffectSet::from_names(&names)?;
     }
-    o.raceway_control = match raceway_control {
-        "outer" => RacewayControl::Outer,
-        "inner" => RacewayControl::Inner,
-        other => {
-            return Err(Error::config(
-                "raceway_control",
-                other,
-                "must be \"outer\" or \"inner\"",
-            ))
-        }
-    };
+    o.raceway_control = RacewayControl::from_name(raceway_control)?;
     Ok(o)
 }
 

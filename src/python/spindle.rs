@@ -14,6 +14,7 @@ use crate::spindle::{
     compensation_preload, grid_point, CompensationPoint, GridPoint, PairState, Preload, Spindle, SpindleConfig,
     SpindleState,
 };
+use crate::thermal::network::LinkKind;
 
 /// A motorized spindle (native).
 #[pyclass(name = "Spindle", module = "thermobear._native", frozen)]
@@ -70,14 +71,19 @@ fn state_dict<'py>(py: Python<'py>, sp: &Spindle, s: &SpindleState) -> PyResult<
     d.set_item("rear", pair_dict(py, &s.rear)?)?;
     let heat: Vec<f64> = s.bearing_heat.iter().map(|h| h.heat.total_w()).collect();
     d.set_item("bearing_heat_w", heat)?;
-    let spin: Vec<f64> = s
-        .bearing_heat
-        .iter()
-        .map(|h| h.heat.inner_spin_w + h.heat.outer_spin_w)
-        .collect();
-    d.set_item("spin_heat_w", spin)?;
-    let drag: Vec<f64> = s.bearing_heat.iter().map(|h| h.drag_w).collect();
-    d.set_item("drag_heat_w", drag)?;
+    // The heat split per bearing (rolling, sliding, spin, drag, churning,
+    // seal, extra), [front A, front B, rear A, rear B].
+    let zero = crate::thermal::friction::HeatBreakdown::default();
+    for (j, (key, _)) in super::thermal::breakdown_columns(&zero).iter().enumerate() {
+        let v: Vec<f64> = s
+            .bearing_heat
+            .iter()
+            .map(|h| super::thermal::breakdown_columns(&h.breakdown)[j].1)
+            .collect();
+        d.set_item(*key, v)?;
+    }
+    let x: Vec<f64> = s.bearing_heat.iter().map(|h| h.cavity_oil_fraction).collect();
+    d.set_item("cavity_oil_fraction", x)?;
     d.set_item("motor_losses_w", s.motor_losses_w)?;
     d.set_item("magnetic_pull_n", sp.magnetic_pull_n())?;
     d.set_item("total_heat_w", s.total_heat_w)?;
@@ -89,6 +95,18 @@ fn state_dict<'py>(py: Python<'py>, sp: &Spindle, s: &SpindleState) -> PyResult<
         s.front_radial_thermal_displacement_m(a0),
     )?;
     d.set_item("front_ball_growth_m", s.front_offsets.ball_diameter_growth_m)?;
+    d.set_item("rear_ball_growth_m", s.rear_offsets.ball_diameter_growth_m)?;
+    // Outward growth of the inner and outer groove curvature centres of each
+    // row, [u_ic, u_oc] in m (seed B Fig. 8a: inner ring, outer ring, ball).
+    for (key, o) in [
+        ("front_groove_centres_m", &s.front_offsets),
+        ("rear_groove_centres_m", &s.rear_offsets),
+    ] {
+        d.set_item(
+            key,
+            vec![o.inner_groove_centre_radial_m, o.outer_groove_centre_radial_m],
+        )?;
+    }
     // The groove-centre offsets the coupled solve applied to each row,
     // [radial, axial] in m: the seam to the rotor model (thermobear.rotor).
     let rear_a0 = sp.config.params.rear_bearing.geometry.free_contact_angle_rad;
@@ -149,7 +167,14 @@ impl PySpindle {
         };
         let kind = preload_kind.unwrap_or_else(|| kind0.to_string());
         let force = preload_n.unwrap_or(c.preload.force_n());
-        let preload = preload_of(&kind, force, spring_rate_n_per_um.unwrap_or(rate0)).py_err()?;
+        let mut preload = preload_of(&kind, force, spring_rate_n_per_um.unwrap_or(rate0)).py_err()?;
+        // No new rate given: keep the stored one to the last bit (the
+        // N/um round trip above is not exact).
+        if let (Preload::Spring { rate_n_per_m, .. }, Preload::Spring { rate_n_per_m: r0, .. }, None) =
+            (&mut preload, &c.preload, spring_rate_n_per_um)
+        {
+            *rate_n_per_m = *r0;
+        }
         let mut cfg: SpindleConfig = c.clone();
         cfg.preload = preload;
         if let Some(f) = radial_load_n {
@@ -244,6 +269,27 @@ impl PySpindle {
         d.set_item("heat_model", c.heat_model.name())?;
         d.set_item("lubrication", c.lubrication.name())?;
         d.set_item("churning_oil_fraction", c.churning_oil_fraction)?;
+        if let Some(s) = &c.oil_supply {
+            // the supply keywords that give this supply back (the drag
+            // follows them, not churning_oil_fraction)
+            let k = s.input();
+            let numbers = [
+                ("oil_flow_cm3_per_min", k.oil_flow_cm3_per_min),
+                ("jet_velocity_m_per_s", k.jet_velocity_m_per_s),
+                ("oil_volume_cm3_per_h", k.oil_volume_cm3_per_h),
+                ("air_flow_l_per_min", k.air_flow_l_per_min),
+                ("oil_level_mm", k.oil_level_mm),
+                ("grease_fill_fraction", k.grease_fill_fraction),
+                ("oil_flow_scale", k.oil_flow_scale),
+                ("cavity_fraction_speed_exponent", k.cavity_fraction_speed_exponent),
+            ];
+            for (name, v) in numbers.into_iter().filter_map(|(n, v)| v.map(|v| (n, v))) {
+                d.set_item(name, v)?;
+            }
+            if let Some(j) = k.jet_count {
+                d.set_item("jet_count", j)?;
+            }
+        }
         d.set_item(
             "motor_losses_at_reference_w",
             p.stator_copper_w + p.stator_iron_w + p.rotor_copper_w + p.rotor_mechanical_w,
@@ -287,6 +333,60 @@ impl PySpindle {
         state_dict(py, &self.inner, &s)
     }
 
+    /// Film coefficient h [W/(m^2 K)] of every convection link of the
+    /// thermal network at each speed: link names and an array (rows: speeds).
+    /// The temperature difference across a link is taken from `temperatures_c`
+    /// (one row of node temperatures per speed, node order) when given, else
+    /// `temperature_difference_k` (only natural convection depends on it).
+    #[pyo3(signature = (speeds_rpm, temperature_difference_k=10.0, temperatures_c=None))]
+    fn convection_coefficients<'py>(
+        &self,
+        py: Python<'py>,
+        speeds_rpm: Vec<f64>,
+        temperature_difference_k: f64,
+        temperatures_c: Option<Vec<Vec<f64>>>,
+    ) -> PyResult<(Vec<String>, Bound<'py, PyArray2<f64>>)> {
+        non_negative("temperature_difference_k", temperature_difference_k).py_err()?;
+        let net = &self.inner.network.network;
+        let n_nodes = net.nodes().len();
+        if let Some(t) = &temperatures_c {
+            if t.len() != speeds_rpm.len() || t.iter().any(|r| r.len() != n_nodes) {
+                return Err(Error::config(
+                    "temperatures_c",
+                    format!("{} rows", t.len()),
+                    "needs one row of node temperatures per speed",
+                ))
+                .py_err();
+            }
+        }
+        let links: Vec<_> = net
+            .links()
+            .iter()
+            .filter_map(|l| match &l.kind {
+                LinkKind::Convection { law, .. } => Some((l, law)),
+                LinkKind::Conduction { .. } => None,
+            })
+            .collect();
+        let mut rows = Vec::with_capacity(speeds_rpm.len());
+        for (i, &n) in speeds_rpm.iter().enumerate() {
+            finite("speeds_rpm", n).py_err()?;
+            let w = crate::units::rpm_to_rad_s(n);
+            rows.push(
+                links
+                    .iter()
+                    .map(|(l, law)| {
+                        let dt = temperatures_c
+                            .as_ref()
+                            .map_or(temperature_difference_k, |t| t[i][l.a] - t[i][l.b]);
+                        law.h_w_m2k(dt, w)
+                    })
+                    .collect::<Vec<f64>>(),
+            );
+        }
+        let names = links.iter().map(|(l, _)| l.name.clone()).collect();
+        Ok((names, PyArray2::from_vec2(py, &rows)?))
+    }
+
     /// Bearing pairs at speed without thermal effects (front, rear).
     fn isothermal<'py>(&self, py: Python<'py>, speed_rpm: f64) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
         let (f, r) = py.detach(|| self.inner.isothermal(speed_rpm)).py_err()?;
@@ -295,8 +395,9 @@ impl PySpindle {
 
     /// Transient from uniform `initial_c` (default ambient): times [s],
     /// node names and temperatures (rows: times) [C] (GIL released; Ctrl-C
-    /// stops it within a step).
-    #[pyo3(signature = (speed_rpm, duration_s, dt_s=5.0, record_every=1, initial_c=None, mechanics_update_k=0.05))]
+    /// or `progress(steps_done, steps)` returning False stops it within a
+    /// step; at most `crate::cancel::MAX_TIME_STEPS` steps).
+    #[pyo3(signature = (speed_rpm, duration_s, dt_s=5.0, record_every=1, initial_c=None, mechanics_update_k=0.05, progress=None))]
     #[allow(clippy::too_many_arguments)]
     fn transient<'py>(
         &self,
@@ -307,9 +408,13 @@ impl PySpindle {
         record_every: usize,
         initial_c: Option<f64>,
         mechanics_update_k: f64,
+        progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         non_negative("mechanics_update_k", mechanics_update_k).py_err()?;
-        let run = watched(py, 1, None, |_, _| {
+        positive("duration_s", duration_s).py_err()?;
+        positive("dt_s", dt_s).py_err()?;
+        let steps = crate::cancel::step_count(duration_s, dt_s, "dt_s", f64::ceil).py_err()?;
+        let run = watched(py, steps, progress.as_ref(), |_, _| {
             self.inner
                 .transient(speed_rpm, duration_s, dt_s, record_every, initial_c, mechanics_update_k)
         })?
@@ -425,6 +530,7 @@ pub struct SpindleHeatArgs {
     sliding_friction_ehl: Option<f64>,
     replenishment_krs: Option<f64>,
     seal_moment_n_m: Option<f64>,
+    oil_supply: super::oil_supply::PySupplyInput,
 }
 
 impl SpindleHeatArgs {
@@ -452,6 +558,14 @@ impl SpindleHeatArgs {
             let (_, f0, x) = resolve_lubrication(None, bt, Some(f0), Some(x))?;
             cfg.params.lubrication_factor_f0 = f0;
             cfg.churning_oil_fraction = x;
+        }
+        let supply = crate::thermal::oil_supply::SupplyInput::from(self.oil_supply).resolve(
+            cfg.lubrication,
+            self.lubrication.is_some(),
+            self.churning_oil_fraction.is_some(),
+        )?;
+        if supply.is_some() || self.lubrication.is_some() || self.churning_oil_fraction.is_some() {
+            cfg.oil_supply = supply;
         }
         if let Some(s) = &self.skf_series {
             cfg.skf.series = Some(SkfSeries::from_name(s)?);

@@ -8,13 +8,15 @@ use pyo3::types::PyDict;
 
 use super::bearing::{PyBearing, PyMaterial};
 use super::errors::IntoPy;
+use super::oil_supply::PySupplyInput;
 use super::parallel::map_interruptible;
 use super::solve::{curve_columns, solve_options, state_dict, tilt_option};
 use crate::bearing::BearingType;
 use crate::bearing::{Bearing, BearingState};
 use crate::error::{finite, Result};
 use crate::thermal::coupled::{seed_a_mounting, CoupledBearing, CoupledOptions, HeatReport, ThermalState};
-use crate::thermal::friction::{resolve_lubrication, HeatModel, Lubrication, SkfSeries, SkfSettings};
+use crate::thermal::friction::{resolve_lubrication, HeatBreakdown, HeatModel, Lubrication, SkfSeries, SkfSettings};
+use crate::thermal::oil_supply::SupplyInput;
 use crate::thermal::presets::SeedAParams;
 use crate::thermal::Lubricant;
 
@@ -41,6 +43,7 @@ pub struct Settings {
     sliding_friction_ehl: Option<f64>,
     replenishment_krs: Option<f64>,
     seal_moment_n_m: f64,
+    oil_supply: PySupplyInput,
 }
 
 impl Settings {
@@ -74,10 +77,16 @@ impl Settings {
             self.lubrication_factor_f0,
             self.churning_oil_fraction,
         )?;
+        let oil_supply = SupplyInput::from(self.oil_supply).resolve(
+            lubrication,
+            self.lubrication.is_some(),
+            self.churning_oil_fraction.is_some(),
+        )?;
         let options = CoupledOptions {
             heat_model,
             lubrication,
             skf,
+            oil_supply,
             lubrication_factor_f0: f0,
             churning_oil_fraction: x,
             solve,
@@ -129,9 +138,33 @@ fn heat_items(py: Python<'_>, d: &Bound<'_, PyDict>, h: &HeatReport) -> PyResult
     d.set_item("viscous_moment_n_m", h.viscous_moment_n_m)?;
     d.set_item("total_heat_w", h.heat.total_w())?;
     d.set_item("churning_w", h.churning_w)?;
+    breakdown_items(d, &h.breakdown)?;
+    d.set_item("cavity_oil_fraction", h.cavity_oil_fraction)?;
     d.set_item("cage_speed_rad_s", h.cage_speed_rad_s)?;
     d.set_item("oil_density_kg_m3", h.oil_density_kg_m3)?;
     Ok(())
+}
+
+/// The heat split keys (W): rolling, sliding, spin, drag, churning, seal,
+/// extra (docs/concepts/physics.md §9, heat split); they sum to the total.
+pub fn breakdown_items(d: &Bound<'_, PyDict>, b: &HeatBreakdown) -> PyResult<()> {
+    for (k, v) in breakdown_columns(b) {
+        d.set_item(k, v)?;
+    }
+    Ok(())
+}
+
+/// The heat split as (key, W) pairs, in the documented order.
+pub fn breakdown_columns(b: &HeatBreakdown) -> [(&'static str, f64); 7] {
+    [
+        ("rolling_heat_w", b.rolling_w),
+        ("sliding_heat_w", b.sliding_w),
+        ("spin_heat_w", b.spin_w),
+        ("drag_heat_w", b.drag_w),
+        ("ring_cage_churning_heat_w", b.churning_w),
+        ("seal_heat_w", b.seal_w),
+        ("extra_heat_w", b.extra_w),
+    ]
 }
 
 fn thermal_dict<'py>(py: Python<'py>, c: &CoupledBearing, s: &ThermalState) -> PyResult<Bound<'py, PyDict>> {
@@ -270,11 +303,14 @@ pub fn thermal_stiffness_curve<'py>(
     d.set_item("heat_w", col(&|s| s.heat.heat.total_w()).into_pyarray(py))?;
     d.set_item("load_heat_w", col(&|s| s.heat.load_w).into_pyarray(py))?;
     d.set_item("viscous_heat_w", col(&|s| s.heat.viscous_w).into_pyarray(py))?;
-    d.set_item("extra_heat_w", col(&|s| s.heat.extra_w).into_pyarray(py))?;
     d.set_item("churning_w", col(&|s| s.heat.churning_w).into_pyarray(py))?;
+    for (j, (key, _)) in breakdown_columns(&HeatBreakdown::default()).iter().enumerate() {
+        let v = col(&|s| breakdown_columns(&s.heat.breakdown)[j].1);
+        d.set_item(*key, v.into_pyarray(py))?;
+    }
     d.set_item(
-        "spin_heat_w",
-        col(&|s| s.heat.heat.inner_spin_w + s.heat.heat.outer_spin_w).into_pyarray(py),
+        "cavity_oil_fraction",
+        col(&|s| s.heat.cavity_oil_fraction).into_pyarray(py),
     )?;
     d.set_item(
         "radial_thermal_offset_um",

@@ -134,15 +134,52 @@ pub struct RowOperatingPoint {
     pub offsets: RacewayOffsets,
 }
 
+/// Most operating points one [`PreloadedRow`] keeps (one per speed): a
+/// Campbell diagram or a response sweep asks each speed several times in a
+/// row (both rows of a pair, the matrices and the solve), and no sweep of
+/// the studies has more than a few hundred speeds, so the bound keeps every
+/// hit while a long-lived row cannot grow without limit.
+pub const ROW_CACHE_CAPACITY: usize = 512;
+
+/// Operating points by speed, at most [`ROW_CACHE_CAPACITY`]; when full the
+/// least recently used one is dropped.
+#[derive(Default)]
+struct PointCache {
+    points: HashMap<u64, (RowOperatingPoint, u64)>,
+    clock: u64,
+}
+
+impl PointCache {
+    fn get(&mut self, key: u64) -> Option<RowOperatingPoint> {
+        self.clock += 1;
+        let now = self.clock;
+        self.points.get_mut(&key).map(|(p, used)| {
+            *used = now;
+            *p
+        })
+    }
+
+    fn insert(&mut self, key: u64, point: RowOperatingPoint) {
+        if self.points.len() >= ROW_CACHE_CAPACITY && !self.points.contains_key(&key) {
+            let oldest = self.points.iter().min_by_key(|(_, (_, used))| *used).map(|(k, _)| *k);
+            if let Some(k) = oldest {
+                self.points.remove(&k);
+            }
+        }
+        self.clock += 1;
+        self.points.insert(key, (point, self.clock));
+    }
+}
+
 /// One angular-contact row type of a pair under a constant-force preload,
 /// solved in its own frame (both rows of the pair share it), with a
-/// per-speed cache.
+/// bounded per-speed cache ([`ROW_CACHE_CAPACITY`]).
 pub struct PreloadedRow {
     model: BallModel,
     preload_n: f64,
     options: SolveOptions,
     offsets: Option<OffsetTable>,
-    cache: Mutex<HashMap<u64, RowOperatingPoint>>,
+    cache: Mutex<PointCache>,
 }
 
 impl std::fmt::Debug for PreloadedRow {
@@ -172,8 +209,13 @@ impl PreloadedRow {
             preload_n,
             options,
             offsets,
-            cache: Mutex::new(HashMap::new()),
+            cache: Mutex::new(PointCache::default()),
         })
+    }
+
+    /// Operating points held in the cache (at most [`ROW_CACHE_CAPACITY`]).
+    pub fn cached_points(&self) -> usize {
+        self.cache.lock().map_or(0, |c| c.points.len())
     }
 
     /// The ball model.
@@ -198,8 +240,8 @@ impl PreloadedRow {
         finite("speed_rpm", speed_rpm)?;
         let speed_rpm = speed_rpm.abs();
         let key = speed_rpm.to_bits();
-        if let Some(p) = self.cache.lock().map_err(|_| poisoned())?.get(&key) {
-            return Ok(*p);
+        if let Some(p) = self.cache.lock().map_err(|_| poisoned())?.get(key) {
+            return Ok(p);
         }
         let p = self.solve_point(speed_rpm)?;
         self.cache.lock().map_err(|_| poisoned())?.insert(key, p);

@@ -9,7 +9,8 @@
 //! [`NonlinearForce`] callback and are resolved each step by a modified
 //! Newton iteration whose tangent (finite-difference Jacobian of the
 //! callback) is kept from step to step and refreshed whenever an iteration
-//! contracts the increment by less than a factor 4.
+//! contracts the increment by less than a factor 10 ([`SLOW_CONTRACTION`]
+//! = 0.1: the next increment above a tenth of the last one).
 //!
 //! Optionally the model is reduced to the lowest undamped modes
 //! (pseudo-modal reduction, q = Phi xi), which removes the very stiff,
@@ -239,8 +240,9 @@ fn nonlinear_tangent(
 }
 
 const BETA: f64 = 0.25;
-/// Refresh the tangent when an iteration shrinks the increment by less than this factor.
-const SLOW_CONTRACTION: f64 = 0.1;
+/// Refresh the tangent when an iteration's increment is above this share of
+/// the last one (contraction by less than a factor 10; docs/concepts/spindle-rotor.md).
+pub const SLOW_CONTRACTION: f64 = 0.1;
 const GAMMA: f64 = 0.5;
 
 fn effective_matrix(
@@ -335,7 +337,7 @@ pub fn time_response(
     let mut a = mass_chol.solve(&f0);
 
     let dt = options.time_step_s;
-    let steps = (options.duration_s / dt).round() as usize;
+    let steps = crate::cancel::step_count(options.duration_s, dt, "time_step_s", f64::round)?;
     let probe = rotor.node_at(options.probe_position_m)?;
     let (px, py) = (rotor.dof(probe, LateralDof::X), rotor.dof(probe, LateralDof::Y));
     let probe_rows: (DVector<f64>, DVector<f64>) = match &lin.basis {
@@ -379,6 +381,7 @@ pub fn time_response(
 
     for step in 1..=steps {
         crate::cancel::check()?;
+        crate::cancel::advance();
         let t1 = step as f64 * dt;
         let f_ext = lin.external(t1);
         let mut x1 = &xi + &v * dt + &a * (0.5 * dt * dt);

@@ -31,11 +31,14 @@
 //!   between the pairs for seed B) and is shared by the same lever rule
 //!   ([`super::shaft_loads`]); each pair's radial load is then
 //!   hypot(F_x, F_y).
-//! * Heat per bearing from its quasi-static state (A-20..A-27): M1 with
-//!   Fa and Fr of that bearing, Mv at the pair's ball temperature, spin heat
-//!   per contact with the Hertz E(kappa) at the free contact angle, spin
-//!   friction coefficient `spin_friction_coefficient`; Burton-Staph split; the network
-//!   lumps a pair in one inner/balls/outer node triple.
+//! * Heat per bearing from its quasi-static state (A-20..A-27) by the
+//!   single bearing's own code ([`crate::thermal::row_heat`]): M1 with Fa
+//!   and Fr of that bearing and the load-weighted mean inner contact angle,
+//!   Mv at the pair's ball temperature (with `temperature_dependent_viscosity`,
+//!   else at the oil-air supply temperature), spin heat per contact with
+//!   E(kappa) at its operating contact angle, spin friction coefficient
+//!   `spin_friction_coefficient`; Burton-Staph split; the network lumps a
+//!   pair in one inner/balls/outer node triple.
 //! * Motor losses as in [`SpindleNetwork::sources_w`] (stator copper +
 //!   iron n^1.5, rotor copper + windage n^2).
 //! * Thermal offsets per pair from [`thermal_offsets`] with the node rises
@@ -56,12 +59,12 @@ use crate::bearing::{BearingModel, BearingState, RacewayOffsets, SolveOptions};
 use crate::effects::{Effect, EffectSet};
 use crate::error::{finite, in_range, non_negative, positive, Error, Result};
 use crate::materials::Material;
-use crate::thermal::coupled::cage_speed_rad_s;
 use crate::thermal::expansion::{thermal_offsets, ComponentRises, Mounting, RingFit, ThermalOffsets};
-use crate::thermal::friction::{friction_heat, FrictionPoint, FrictionSettings, HeatModel, Lubrication, SkfSettings};
-use crate::thermal::heat::{BearingHeat, HeatSplit, SpinContact};
+use crate::thermal::friction::{FrictionSettings, HeatModel, Lubrication, SkfSettings};
+use crate::thermal::heat::{BearingHeat, HeatSplit};
 use crate::thermal::network::{SteadySolver, Temperatures, Transient, TransientSolver};
 use crate::thermal::presets::{BallConduction, SpindleNetwork, SpindleParams};
+use crate::thermal::row_heat::{oil_temperature_c, row_friction_heat, OilState};
 use crate::units::rpm_to_rad_s;
 use crate::Bearing;
 
@@ -111,6 +114,11 @@ pub struct SpindleConfig {
     /// (0..1; default 0, off).
     #[serde(default)]
     pub churning_oil_fraction: f64,
+    /// Oil supply of the bearings (docs/concepts/physics.md §9): when set,
+    /// the cavity oil fraction, drag and churning follow from the supply and
+    /// the speed, and `churning_oil_fraction` is not used. Default None.
+    #[serde(default)]
+    pub oil_supply: Option<crate::thermal::oil_supply::SupplySettings>,
     /// Settings of the SKF-style model.
     #[serde(default)]
     pub skf: SkfSettings,
@@ -201,6 +209,7 @@ impl SpindleConfig {
             heat_model: HeatModel::Palmgren,
             lubrication: Lubrication::OilAir,
             churning_oil_fraction: 0.0,
+            oil_supply: None,
             skf: SkfSettings::default(),
             max_iterations: 60,
             tolerance_k: 1e-4,
@@ -210,13 +219,6 @@ impl SpindleConfig {
 
 fn default_lubrication() -> Lubrication {
     Lubrication::OilAir
-}
-
-/// Per-pair constants of the heat model.
-#[derive(Debug, Clone)]
-struct PairHeatModel {
-    /// E(kappa) of the inner and outer contacts at the free contact angle.
-    elliptic_e: (f64, f64),
 }
 
 /// A spindle ready to solve.
@@ -233,8 +235,6 @@ pub struct Spindle {
     pub rear: BearingPair,
     /// The spindle thermal network built from `config.params`.
     pub network: SpindleNetwork,
-    heat_front: PairHeatModel,
-    heat_rear: PairHeatModel,
     housing: Material,
 }
 
@@ -249,8 +249,12 @@ pub struct BearingHeatReport {
     pub load_moment_n_m: f64,
     /// Palmgren viscous moment Mv, or the SKF sliding moment M_sl [N m].
     pub viscous_moment_n_m: f64,
-    /// Ball drag heat at the configured oil fraction \[W\].
+    /// Drag heat (ball drag in the mixture, or the bath drag) \[W\].
     pub drag_w: f64,
+    /// Cavity oil volume fraction X of the drag [-].
+    pub cavity_oil_fraction: f64,
+    /// Heat split into rolling, sliding, spin, drag, churning, seal \[W\].
+    pub breakdown: crate::thermal::friction::HeatBreakdown,
 }
 
 /// A solved spindle operating point.
@@ -320,21 +324,14 @@ struct Evaluation {
     axial_growth_m: f64,
 }
 
-fn pair_heat_model(b: &Bearing) -> Result<PairHeatModel> {
-    let a0 = b.geometry.free_contact_angle_rad;
-    Ok(PairHeatModel {
-        elliptic_e: (
-            b.inner_contact(a0)?.ellipse.e_second,
-            b.outer_contact(a0)?.ellipse.e_second,
-        ),
-    })
-}
-
 impl Spindle {
     /// Build the pairs and the network.
     pub fn new(config: SpindleConfig) -> Result<Self> {
         non_negative("spin_friction_coefficient", config.spin_friction_coefficient)?;
         in_range("churning_oil_fraction", config.churning_oil_fraction, 0.0, 1.0)?;
+        if let Some(s) = &config.oil_supply {
+            s.validate()?;
+        }
         config.skf.validate()?;
         finite("radial_load_n", config.radial_load_n)?;
         finite("assembly_temperature_c", config.assembly_temperature_c)?;
@@ -357,10 +354,12 @@ impl Spindle {
         let f0 = config.preload.force_n();
         positive("preload_n", f0)?;
         params.preload_n = f0;
-        let g = &params.front_bearing.geometry;
-        params.ball_conduction = BallConduction::HertzConstriction {
-            contact_load_n: f0 / (g.ball_count as f64 * g.free_contact_angle_rad.sin()),
-        };
+        // The ball conduction follows the preload, row by row: a fixed
+        // Hertz contact load (stored configurations) becomes each row's own
+        // contact under this preload; the bulk (seed A) form is kept.
+        if let BallConduction::HertzConstriction { .. } = params.ball_conduction {
+            params.ball_conduction = BallConduction::HertzAtPreload;
+        }
         let opts = SolveOptions {
             effects: config.effects,
             ..SolveOptions::default()
@@ -381,8 +380,6 @@ impl Spindle {
             config.preload,
             opts,
         )?;
-        let heat_front = pair_heat_model(&params.front_bearing)?;
-        let heat_rear = pair_heat_model(&params.rear_bearing)?;
         let network = SpindleNetwork::new(params.clone())?;
         let mut config = config;
         config.params = params;
@@ -391,8 +388,6 @@ impl Spindle {
             front,
             rear,
             network,
-            heat_front,
-            heat_rear,
             housing: Material::shaft_steel(),
         })
     }
@@ -584,76 +579,49 @@ impl Spindle {
         stator + rotor
     }
 
-    fn one_bearing_heat(
-        &self,
-        state: &BearingState,
-        bearing: &Bearing,
-        hm: &PairHeatModel,
-        oil_c: f64,
-        speed_rpm: f64,
-    ) -> Result<BearingHeatReport> {
-        let g = &bearing.geometry;
-        let l = &state.applied_load;
-        let axial = l[2].max(0.0);
-        let radial = l[0].hypot(l[1]);
-        let nb = state.balls.len().max(1) as f64;
-        let alpha = state.balls.iter().map(|b| b.inner_contact_angle_rad).sum::<f64>() / nb;
-        let lub = &self.config.params.lubricant;
-        let nu = lub.kinematic_viscosity_cst(oil_c)?;
-        let contacts = |inner: bool| -> Vec<SpinContact> {
-            state
-                .balls
-                .iter()
-                .map(|b| SpinContact {
-                    load_n: if inner { b.inner_load_n } else { b.outer_load_n }.max(0.0),
-                    semi_major_m: if inner {
-                        b.inner_semi_major_m
-                    } else {
-                        b.outer_semi_major_m
-                    }
-                    .max(0.0),
-                    elliptic_e: if inner { hm.elliptic_e.0 } else { hm.elliptic_e.1 },
-                    spin_speed_rad_s: if inner { b.inner_spin_rad_s } else { b.outer_spin_rad_s },
-                })
-                .collect()
-        };
-        // Spin heat only with the spin-friction effect on, as in
-        // the single-bearing model (src/thermal/coupled.rs).
-        let (ci, co) = if self.config.effects.has(Effect::SpinFriction) {
-            (contacts(true), contacts(false))
-        } else {
-            (Vec::new(), Vec::new())
-        };
+    /// The friction settings of the spindle's bearings (heat model, f0,
+    /// mu_s, oil fraction X, SKF), as the single bearing's
+    /// [`crate::thermal::coupled::friction_settings`].
+    pub fn friction_settings(&self) -> FrictionSettings {
         let c = &self.config;
-        let settings = FrictionSettings {
+        FrictionSettings {
             heat_model: c.heat_model,
             lubrication: c.lubrication,
             lubrication_factor_f0: c.params.lubrication_factor_f0,
             spin_friction_coefficient: c.spin_friction_coefficient,
             oil_volume_fraction: c.churning_oil_fraction,
             skf: c.skf,
-        };
-        let point = FrictionPoint {
-            geometry: g,
-            axial_n: axial,
-            radial_n: radial,
-            contact_angle_rad: alpha,
-            speed_rpm,
-            viscosity_cst: nu,
-            oil_density_kg_m3: lub.density_kg_m3(oil_c)?,
-            cage_speed_rad_s: cage_speed_rad_s(state),
-            ball_mass_kg: bearing.ball_mass_kg(),
-            lubricant_name: &lub.name,
-            inner_contacts: &ci,
-            outer_contacts: &co,
-        };
-        let f = friction_heat(&settings, &point)?;
+            oil_supply: c.oil_supply,
+        }
+    }
+
+    /// Heat of one solved bearing row of this spindle (`bearing` its
+    /// geometry, `state` from a pair solve) with the oil at `oil_c`: the
+    /// single implementation of the single bearing
+    /// ([`crate::thermal::row_heat::row_friction_heat`]) under the row's own
+    /// axial and radial load.
+    pub fn row_heat(&self, state: &BearingState, bearing: &Bearing, oil_c: f64) -> Result<BearingHeatReport> {
+        let l = &state.applied_load;
+        let lub = &self.config.params.lubricant;
+        let oil = OilState::at(lub, oil_c)?;
+        let f = row_friction_heat(
+            bearing,
+            state,
+            l[2].max(0.0),
+            l[0].hypot(l[1]),
+            &oil,
+            lub,
+            &self.friction_settings(),
+            self.config.effects,
+        )?;
         Ok(BearingHeatReport {
             heat: f.heat,
             split: f.heat.split(),
             load_moment_n_m: f.load_moment_n_m,
             viscous_moment_n_m: f.viscous_moment_n_m,
             drag_w: f.drag_w,
+            cavity_oil_fraction: f.cavity_oil_fraction,
+            breakdown: f.breakdown,
         })
     }
 
@@ -734,17 +702,13 @@ impl Spindle {
     ) -> Result<([BearingHeatReport; 4], Vec<f64>, f64)> {
         let n = &self.network;
         let p = &self.config.params;
-        let viscosity_on = self.config.effects.has(Effect::TemperatureDependentViscosity);
-        let oil = |node: usize| match t {
-            Some(t) if viscosity_on => t[node],
-            _ => 40.0,
-        };
+        let oil = |node: usize| oil_temperature_c(self.config.effects, p.oil_air_temperature_c, t.map(|t| t[node]));
         let (of, or) = (oil(n.front_balls), oil(n.rear_balls));
         let heat = [
-            self.one_bearing_heat(&front.bearings[0], &p.front_bearing, &self.heat_front, of, speed_rpm)?,
-            self.one_bearing_heat(&front.bearings[1], &p.front_bearing, &self.heat_front, of, speed_rpm)?,
-            self.one_bearing_heat(&rear.bearings[0], &p.rear_bearing, &self.heat_rear, or, speed_rpm)?,
-            self.one_bearing_heat(&rear.bearings[1], &p.rear_bearing, &self.heat_rear, or, speed_rpm)?,
+            self.row_heat(&front.bearings[0], &p.front_bearing, of)?,
+            self.row_heat(&front.bearings[1], &p.front_bearing, of)?,
+            self.row_heat(&rear.bearings[0], &p.rear_bearing, or)?,
+            self.row_heat(&rear.bearings[1], &p.rear_bearing, or)?,
         ];
         let mut s = vec![0.0; n.network.nodes().len()];
         let motor_w = self.motor_sources(speed_rpm, &mut s);
@@ -1054,9 +1018,14 @@ pub struct GridPoint {
     /// Total bearing heat \[W\].
     pub bearing_heat_w: f64,
     /// Radial displacement of the front pair under its radial load at speed,
-    /// cold geometry \[m\].
+    /// cold geometry, signed along the pair's external radial load
+    /// ([`radial_displacement_along_load_m`]; positive: the shaft moves
+    /// with the load) \[m\].
     pub mechanical_radial_displacement_m: f64,
-    /// Radial thermal displacement of the front bearing \[m\].
+    /// Radial thermal displacement of the front bearing, u_Tr plus the
+    /// projected free-gap change ([`ThermalOffsets::radial_with_gap_m`];
+    /// positive: the inner groove centre moves outward relative to the
+    /// outer one, more interference) \[m\].
     pub thermal_radial_displacement_m: f64,
     /// Radial stiffness K_xx of the front pair, coupled thermal state [N/m].
     pub front_radial_stiffness_n_per_m: f64,
@@ -1067,9 +1036,26 @@ pub struct GridPoint {
 }
 
 impl GridPoint {
-    /// Total radial displacement of seed B Figs. 15-16 \[m\].
+    /// Total radial displacement of seed B Figs. 15-16 (its eq. 22,
+    /// delta_r + u_Tr) \[m\]: the sum of the two signed displacements of
+    /// the loaded side's inner raceway, each positive outward along the
+    /// load (the mechanical one with the load, the thermal one towards more
+    /// interference); a thermal shrink (negative u_Tr) reduces it.
     pub fn total_radial_displacement_m(&self) -> f64 {
         self.mechanical_radial_displacement_m + self.thermal_radial_displacement_m
+    }
+}
+
+/// Radial displacement of a pair along its external radial load \[m\]:
+/// the shaft displacement (dx, dy) projected on the direction of the load
+/// (Fx, Fy), positive with the load; with no radial load (no direction)
+/// the size hypot(dx, dy).
+pub fn radial_displacement_along_load_m(displacement: &[f64; 5], load: &[f64; 5]) -> f64 {
+    let f = load[0].hypot(load[1]);
+    if f > 0.0 {
+        (displacement[0] * load[0] + displacement[1] * load[1]) / f
+    } else {
+        displacement[0].hypot(displacement[1])
     }
 }
 
@@ -1090,6 +1076,7 @@ pub fn grid_point(spindle: &Spindle, speed_rpm: f64, preload_n: f64, radial_load
     let n = &sp.network;
     let t = &s.temperatures.temperatures_c;
     let a0 = sp.config.params.front_bearing.geometry.free_contact_angle_rad;
+    let (front_load, _) = sp.pair_loads()?;
     Ok(GridPoint {
         speed_rpm,
         preload_n,
@@ -1099,7 +1086,7 @@ pub fn grid_point(spindle: &Spindle, speed_rpm: f64, preload_n: f64, radial_load
         front_outer_c: t[n.front_outer],
         operating_preload_n: s.front.preload_n,
         bearing_heat_w: s.bearing_heat.iter().map(|h| h.heat.total_w()).sum(),
-        mechanical_radial_displacement_m: cold.displacement[0].abs(),
+        mechanical_radial_displacement_m: radial_displacement_along_load_m(&cold.displacement, &front_load),
         thermal_radial_displacement_m: s.front_radial_thermal_displacement_m(a0),
         front_radial_stiffness_n_per_m: s.front.stiffness_matrix[0][0],
         front_radial_stiffness_isothermal_n_per_m: cold.stiffness_matrix[0][0],

@@ -341,8 +341,24 @@ impl BearingPair {
         self.solve_warm(speed_rpm, load, &mut w)
     }
 
-    /// Solve starting from (and updating) a warm start.
+    /// Solve starting from (and updating) a warm start. A warm start the
+    /// damped Newton iteration cannot leave (no step along its direction
+    /// lowers the residual, as a start on the far side of a contact loss
+    /// can do) is retried once from the cold start, the unloaded position.
     pub fn solve_warm(&self, speed_rpm: f64, load: &PairLoad, pw: &mut PairWarm) -> Result<PairState> {
+        let cold = pw.displacement == [0.0; 5]
+            && pw.spring_compression_m == 0.0
+            && pw.balls.iter().all(|b| *b == WarmStart::default());
+        match self.solve_warm_once(speed_rpm, load, pw) {
+            Err(Error::Convergence { .. }) if !cold => {
+                *pw = PairWarm::default();
+                self.solve_warm_once(speed_rpm, load, pw)
+            }
+            r => r,
+        }
+    }
+
+    fn solve_warm_once(&self, speed_rpm: f64, load: &PairLoad, pw: &mut PairWarm) -> Result<PairState> {
         let (start_u, start_x) = (pw.displacement, pw.spring_compression_m);
         non_negative("speed_rpm", speed_rpm)?;
         for (i, v) in load.external_load.iter().enumerate() {

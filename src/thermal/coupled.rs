@@ -53,17 +53,16 @@
 use rayon::prelude::*;
 
 use super::expansion::{thermal_offsets, ComponentRises, Mounting, RingFit, ThermalOffsets};
-use super::friction::{
-    friction_heat, FrictionPoint, FrictionSettings, HeatModel, Lubrication, SkfMoments, SkfSettings,
-};
-use super::heat::{BearingHeat, HeatSplit, SpinContact};
+use super::friction::{FrictionSettings, HeatBreakdown, HeatModel, Lubrication, SkfMoments, SkfSettings};
+use super::heat::{BearingHeat, HeatSplit};
 use super::lubricant::Lubricant;
 use super::network::SteadySolver;
+use super::oil_supply::SupplySettings;
 use super::presets::{seed_a_network, BearingNetwork, SeedAParams};
-use crate::bearing::contact::{curvature, hamrock_brewe};
+use super::row_heat::{oil_temperature_c, row_friction_heat, OilState};
 use crate::bearing::quasi_static::{static_start_q, WarmStart};
-use crate::bearing::{Bearing, BearingModel, BearingState, Raceway, RacewayOffsets, SolveOptions};
-use crate::effects::{Effect, EffectSet};
+use crate::bearing::{Bearing, BearingModel, BearingState, RacewayOffsets, SolveOptions};
+use crate::effects::EffectSet;
 use crate::error::{finite, in_range, non_negative, positive, Error, Result};
 use crate::units::rpm_to_rad_s;
 
@@ -101,6 +100,10 @@ pub struct CoupledOptions {
     /// like rolling heat (A-27: 1/4 inner ring, 1/2 balls, 1/4 outer ring).
     /// Calibration input; default 0 (off: seed A's heat, A-23).
     pub churning_oil_fraction: f64,
+    /// Oil supply (docs/concepts/physics.md §9, oil supply): when set, the
+    /// cavity oil fraction, drag and churning follow from the supply and the
+    /// speed and `churning_oil_fraction` is not used. Default None.
+    pub oil_supply: Option<SupplySettings>,
     /// Heat model (docs/concepts/physics.md §9): Palmgren (default, the
     /// seeds') or the four-term SKF-style model.
     pub heat_model: HeatModel,
@@ -132,6 +135,7 @@ impl Default for CoupledOptions {
             reference_temperature_c: None,
             extra_heat_w: 0.0,
             churning_oil_fraction: 0.0,
+            oil_supply: None,
             heat_model: HeatModel::Palmgren,
             lubrication: Lubrication::OilAir,
             skf: SkfSettings::default(),
@@ -157,6 +161,9 @@ impl CoupledOptions {
         in_range("extra_heat_w", self.extra_heat_w, 0.0, 1e4)?;
         // A volume fraction: 0 (dry air) .. 1 (flooded cavity).
         in_range("churning_oil_fraction", self.churning_oil_fraction, 0.0, 1.0)?;
+        if let Some(s) = &self.oil_supply {
+            s.validate()?;
+        }
         self.skf.validate()?;
         positive("housing_conductance_scale", self.housing_conductance_scale)?;
         in_range("housing_conductance_scale", self.housing_conductance_scale, 0.01, 100.0)?;
@@ -222,64 +229,14 @@ pub struct HeatReport {
     pub heat: BearingHeat,
     /// Burton-Staph split \[W\].
     pub split: HeatSplit,
+    /// Heat split into rolling, sliding, spin, drag, churning, seal and
+    /// extra; sums to `heat.total_w()` \[W\].
+    pub breakdown: HeatBreakdown,
+    /// Cavity oil volume fraction X of the drag [-].
+    pub cavity_oil_fraction: f64,
 }
 
-/// Load-weighted mean inner contact angle of the loaded balls; the free
-/// angle when no ball carries load \[rad\].
-pub fn mean_inner_contact_angle_rad(bearing: &Bearing, state: &BearingState) -> f64 {
-    let (qa, q) = state.balls.iter().fold((0.0, 0.0), |(qa, q), b| {
-        (qa + b.inner_load_n * b.inner_contact_angle_rad, q + b.inner_load_n)
-    });
-    if q > 0.0 {
-        qa / q
-    } else {
-        bearing.geometry.free_contact_angle_rad
-    }
-}
-
-/// Cage speed of a solved state: the mean orbit speed of its balls
-/// [rad/s]. The quasi-static model gives each ball its own orbit speed
-/// (equal under a pure axial load); the cage makes them share one.
-pub fn cage_speed_rad_s(state: &BearingState) -> f64 {
-    let n = state.balls.len().max(1) as f64;
-    state.balls.iter().map(|b| b.orbit_speed_rad_s).sum::<f64>() / n
-}
-
-/// Complete elliptic integral E of a contact at `alpha` (Hamrock-Brewe).
-fn elliptic_e(bearing: &Bearing, raceway: Raceway, alpha: f64) -> f64 {
-    let g = &bearing.geometry;
-    let f = match raceway {
-        Raceway::Inner => g.inner_conformity,
-        Raceway::Outer => g.outer_conformity,
-    };
-    let c = curvature(raceway, g.ball_diameter_m, g.pitch_diameter_m, f, alpha);
-    hamrock_brewe(c.ry / c.rx).1
-}
-
-/// Spin contacts of every ball from a solved state.
-pub fn spin_contacts(bearing: &Bearing, state: &BearingState) -> (Vec<SpinContact>, Vec<SpinContact>) {
-    let inner = state
-        .balls
-        .iter()
-        .map(|b| SpinContact {
-            load_n: b.inner_load_n.max(0.0),
-            semi_major_m: b.inner_semi_major_m.max(0.0),
-            elliptic_e: elliptic_e(bearing, Raceway::Inner, b.inner_contact_angle_rad),
-            spin_speed_rad_s: b.inner_spin_rad_s,
-        })
-        .collect();
-    let outer = state
-        .balls
-        .iter()
-        .map(|b| SpinContact {
-            load_n: b.outer_load_n.max(0.0),
-            semi_major_m: b.outer_semi_major_m.max(0.0),
-            elliptic_e: elliptic_e(bearing, Raceway::Outer, b.outer_contact_angle_rad),
-            spin_speed_rad_s: b.outer_spin_rad_s,
-        })
-        .collect();
-    (inner, outer)
-}
+pub use super::row_heat::{cage_speed_rad_s, mean_inner_contact_angle_rad, spin_contacts};
 
 /// The friction settings of `options` (heat model, f0, mu_s, X, SKF).
 pub fn friction_settings(options: &CoupledOptions) -> FrictionSettings {
@@ -290,6 +247,7 @@ pub fn friction_settings(options: &CoupledOptions) -> FrictionSettings {
         spin_friction_coefficient: options.spin_friction_coefficient,
         oil_volume_fraction: options.churning_oil_fraction,
         skf: options.skf,
+        oil_supply: options.oil_supply,
     }
 }
 
@@ -306,29 +264,18 @@ pub fn operating_heat(
     options: &CoupledOptions,
 ) -> Result<HeatReport> {
     let omega = rpm_to_rad_s(state.speed_rpm);
-    let nu = lubricant.kinematic_viscosity_cst(oil_c)?;
-    let (ci, co) = if options.solve.effects.has(Effect::SpinFriction) {
-        spin_contacts(bearing, state)
-    } else {
-        (Vec::new(), Vec::new())
-    };
-    let cage = cage_speed_rad_s(state);
-    let rho = lubricant.density_kg_m3(oil_c)?;
-    let point = FrictionPoint {
-        geometry: &bearing.geometry,
-        axial_n: axial_n.abs(),
-        radial_n: radial_n.abs(),
-        contact_angle_rad: mean_inner_contact_angle_rad(bearing, state),
-        speed_rpm: state.speed_rpm,
-        viscosity_cst: nu,
-        oil_density_kg_m3: rho,
-        cage_speed_rad_s: cage,
-        ball_mass_kg: bearing.ball_mass_kg(),
-        lubricant_name: &lubricant.name,
-        inner_contacts: &ci,
-        outer_contacts: &co,
-    };
-    let f = friction_heat(&friction_settings(options), &point)?;
+    let oil = OilState::at(lubricant, oil_c)?;
+    let settings = friction_settings(options);
+    let f = row_friction_heat(
+        bearing,
+        state,
+        axial_n,
+        radial_n,
+        &oil,
+        lubricant,
+        &settings,
+        options.solve.effects,
+    )?;
     let mut heat = f.heat;
     // The extra heat is split like rolling friction heat; the ball
     // drag heat is already in the rolling part.
@@ -343,12 +290,17 @@ pub fn operating_heat(
         skf: f.skf,
         extra_w: options.extra_heat_w,
         churning_w: f.drag_w,
-        cage_speed_rad_s: cage,
-        oil_density_kg_m3: rho,
-        oil_temperature_c: oil_c,
-        viscosity_cst: nu,
+        cage_speed_rad_s: cage_speed_rad_s(state),
+        oil_density_kg_m3: oil.density_kg_m3,
+        oil_temperature_c: oil.temperature_c,
+        viscosity_cst: oil.viscosity_cst,
         heat,
         split: heat.split(),
+        breakdown: HeatBreakdown {
+            extra_w: options.extra_heat_w,
+            ..f.breakdown
+        },
+        cavity_oil_fraction: f.cavity_oil_fraction,
     })
 }
 
@@ -596,11 +548,7 @@ impl CoupledBearing {
                     }
                 }
             };
-            let oil_c = if effects.has(Effect::TemperatureDependentViscosity) {
-                t[oil_node]
-            } else {
-                self.params.oil_air_temperature_c
-            };
+            let oil_c = oil_temperature_c(effects, self.params.oil_air_temperature_c, Some(t[oil_node]));
             let heat = operating_heat(bearing, &state, axial_n, radial_n, lub, oil_c, &self.options)?;
             let g = solver
                 .solve(&self.network.sources_w(&heat.split), omega)?
@@ -825,6 +773,7 @@ pub fn stiffness_curve_mode(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::effects::Effect;
     use crate::thermal::heat::bearing_heat;
 
     /// Seed A: 300 N preload + 2380.9 N axial, 1189.9 N radial (100 N m).

@@ -55,6 +55,7 @@ use super::heat::{
     ball_drag_power_w, bearing_heat, load_moment_n_m, static_load_rating_n, viscous_moment_n_m, BearingHeat,
     SpinContact, SPHERE_DRAG_COEFFICIENT,
 };
+use super::oil_supply::{supply_drag, BathBearing, DragPoint, SupplyDrag, SupplySettings};
 use crate::bearing::{BearingGeometry, BearingType};
 use crate::error::{finite, in_range, non_negative, positive, Error, Result};
 use crate::units::rpm_to_rad_s;
@@ -581,10 +582,15 @@ pub struct FrictionSettings {
     pub lubrication_factor_f0: f64,
     /// Spin friction coefficient mu_s (Palmgren model, with the effect on).
     pub spin_friction_coefficient: f64,
-    /// Oil volume fraction X of the ball drag (both models; 0 = off).
+    /// Oil volume fraction X of the ball drag (both models; 0 = off); the
+    /// fixed fraction used when `oil_supply` is None.
     pub oil_volume_fraction: f64,
     /// SKF settings.
     pub skf: SkfSettings,
+    /// The oil supply ([`super::oil_supply`]): when set, the cavity oil
+    /// fraction, drag and churning follow from it and the speed, and
+    /// `oil_volume_fraction` is not used.
+    pub oil_supply: Option<SupplySettings>,
 }
 
 /// One operating point of one bearing for [`friction_heat`].
@@ -625,12 +631,18 @@ pub struct FrictionHeat {
     pub viscous_moment_n_m: f64,
     /// SKF seal moment (0 with Palmgren) \[N m\].
     pub seal_moment_n_m: f64,
-    /// Ball drag heat \[W\].
+    /// Drag heat \[W\] (ball drag in the mixture, or the bath drag).
     pub drag_w: f64,
+    /// Churning heat of rings and cage \[W\].
+    pub churning_w: f64,
+    /// Cavity oil volume fraction X used by the drag [-].
+    pub cavity_oil_fraction: f64,
     /// The SKF factors (None with Palmgren).
     pub skf: Option<SkfMoments>,
-    /// Heat by mechanism: rolling = omega (moments) + drag; spin (Palmgren only).
+    /// Heat by mechanism: rolling = omega (moments) + drag + churning; spin (Palmgren only).
     pub heat: BearingHeat,
+    /// The heat split into rolling, sliding, spin, drag, churning and seal.
+    pub breakdown: HeatBreakdown,
 }
 
 /// Sum of the ball centrifugal forces `Z m (dm/2) omega_c^2` \[N\] (A-16
@@ -649,10 +661,45 @@ fn centrifugal_load_n(p: &FrictionPoint) -> Result<f64> {
     Ok(g.ball_count as f64 * p.ball_mass_kg * 0.5 * g.pitch_diameter_m * p.cage_speed_rad_s.powi(2))
 }
 
-/// Heat of one bearing at one operating point with `settings` (module docs).
-pub fn friction_heat(settings: &FrictionSettings, p: &FrictionPoint) -> Result<FrictionHeat> {
+/// Drag heat of one bearing at one operating point \[W\]: the one drag
+/// implementation of the single bearing and the spindle rows (both heat
+/// models). Today the ball drag in the oil-air mixture of the cavity
+/// ([`ball_drag_power_w`]) at the oil volume fraction of `settings`, the
+/// point's cage speed and oil density.
+pub fn drag_heat_w(settings: &FrictionSettings, p: &FrictionPoint) -> Result<f64> {
+    Ok(supply_drag_of(settings, p)?.drag_w)
+}
+
+/// Cavity oil fraction, drag and churning of one bearing at one point: from
+/// the oil supply and the speed when `settings.oil_supply` is set
+/// ([`supply_drag`]), else the ball drag at the fixed fraction
+/// `settings.oil_volume_fraction` ([`ball_drag_power_w`], C_D = 0.47).
+pub fn supply_drag_of(settings: &FrictionSettings, p: &FrictionPoint) -> Result<SupplyDrag> {
     let g = p.geometry;
-    let omega = rpm_to_rad_s(p.speed_rpm);
+    if let Some(s) = &settings.oil_supply {
+        let kz = settings
+            .skf
+            .series
+            .unwrap_or(SkfSeries::default_for(g.bearing_type))
+            .constants()
+            .kz;
+        let point = DragPoint {
+            bearing: BathBearing {
+                bore_m: g.bore_m,
+                outer_diameter_m: g.outer_diameter_m,
+                pitch_diameter_m: g.pitch_diameter_m,
+                ball_diameter_m: g.ball_diameter_m,
+                kz,
+                rows: 1,
+            },
+            ball_count: g.ball_count,
+            speed_rpm: p.speed_rpm,
+            cage_speed_rad_s: p.cage_speed_rad_s,
+            oil_density_kg_m3: p.oil_density_kg_m3,
+            viscosity_cst: p.viscosity_cst,
+        };
+        return supply_drag(s, &point);
+    }
     let drag_w = ball_drag_power_w(
         g.ball_count,
         g.ball_diameter_m,
@@ -662,6 +709,19 @@ pub fn friction_heat(settings: &FrictionSettings, p: &FrictionPoint) -> Result<F
         settings.oil_volume_fraction,
         SPHERE_DRAG_COEFFICIENT,
     )?;
+    Ok(SupplyDrag {
+        cavity_oil_fraction: settings.oil_volume_fraction,
+        drag_w,
+        churning_w: 0.0,
+    })
+}
+
+/// Heat of one bearing at one operating point with `settings` (module docs).
+pub fn friction_heat(settings: &FrictionSettings, p: &FrictionPoint) -> Result<FrictionHeat> {
+    let g = p.geometry;
+    let omega = rpm_to_rad_s(p.speed_rpm);
+    let sd = supply_drag_of(settings, p)?;
+    let drag_w = sd.drag_w;
     let (m_a, m_b, seal, skf, mut heat) = match settings.heat_model {
         HeatModel::Palmgren => {
             let m1 = load_moment_n_m(g, p.axial_n, p.radial_n, p.contact_angle_rad)?;
@@ -710,15 +770,69 @@ pub fn friction_heat(settings: &FrictionSettings, p: &FrictionPoint) -> Result<F
             (m.rolling_n_m, m.sliding_n_m, seal, Some(m), h)
         }
     };
-    heat.rolling_w += drag_w;
+    let breakdown = HeatBreakdown::of(omega, &heat, skf.as_ref(), seal, &sd);
+    heat.rolling_w += drag_w + sd.churning_w;
     Ok(FrictionHeat {
         load_moment_n_m: m_a,
         viscous_moment_n_m: m_b,
         seal_moment_n_m: seal,
         drag_w,
+        churning_w: sd.churning_w,
+        cavity_oil_fraction: sd.cavity_oil_fraction,
         skf,
         heat,
+        breakdown,
     })
+}
+
+/// Heat of one bearing split by mechanism \[W\] (docs/concepts/physics.md
+/// §9, "Heat split"): the parts sum to the bearing's total heat (with the
+/// extra heat the caller adds, if any).
+///
+/// Palmgren's moments do not separate rolling from sliding: omega (M1 + Mv)
+/// is `rolling_w`, `sliding_w` is 0, the per-contact spin heat is
+/// `spin_w`. The SKF model separates them: omega M_rr is `rolling_w`,
+/// omega M_sl (which holds the spin sliding) `sliding_w`, `spin_w` is 0.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct HeatBreakdown {
+    /// Rolling heat \[W\].
+    pub rolling_w: f64,
+    /// Sliding heat \[W\].
+    pub sliding_w: f64,
+    /// Spin heat (both raceways) \[W\].
+    pub spin_w: f64,
+    /// Drag heat: balls in the oil-air mixture, or the bath drag \[W\].
+    pub drag_w: f64,
+    /// Churning heat of rings and cage \[W\].
+    pub churning_w: f64,
+    /// Seal heat \[W\].
+    pub seal_w: f64,
+    /// Extra heat given by the caller \[W\].
+    pub extra_w: f64,
+}
+
+impl HeatBreakdown {
+    /// The split of a friction heat before the drag is added to `heat`.
+    fn of(omega: f64, heat: &BearingHeat, skf: Option<&SkfMoments>, seal_n_m: f64, sd: &SupplyDrag) -> Self {
+        let (rolling_w, sliding_w, seal_w) = match skf {
+            Some(m) => (omega * m.rolling_n_m, omega * m.sliding_n_m, omega * seal_n_m),
+            None => (heat.rolling_w, 0.0, 0.0),
+        };
+        HeatBreakdown {
+            rolling_w,
+            sliding_w,
+            spin_w: heat.inner_spin_w + heat.outer_spin_w,
+            drag_w: sd.drag_w,
+            churning_w: sd.churning_w,
+            seal_w,
+            extra_w: 0.0,
+        }
+    }
+
+    /// Sum of every part \[W\].
+    pub fn total_w(&self) -> f64 {
+        self.rolling_w + self.sliding_w + self.spin_w + self.drag_w + self.churning_w + self.seal_w + self.extra_w
+    }
 }
 
 #[cfg(test)]

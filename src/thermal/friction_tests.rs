@@ -432,6 +432,7 @@ fn settings(model: HeatModel, x: f64) -> FrictionSettings {
         spin_friction_coefficient: 0.05,
         oil_volume_fraction: x,
         skf: SkfSettings::default(),
+        oil_supply: None,
     }
 }
 

@@ -15,7 +15,9 @@ pub mod friction;
 pub mod heat;
 pub mod lubricant;
 pub mod network;
+pub mod oil_supply;
 pub mod presets;
+pub mod row_heat;
 
 pub use heat::{bearing_heat, BearingHeat, HeatSplit, SpinContact};
 pub use lubricant::Lubricant;

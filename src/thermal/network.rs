@@ -945,6 +945,10 @@ pub struct TransientSolver {
 /// TR-BDF2 stage fraction gamma = 2 - sqrt(2).
 const GAMMA: f64 = 2.0 - std::f64::consts::SQRT_2;
 
+/// The most rows a transient records (times x node temperatures): a
+/// million rows of a spindle network are a few hundred megabytes.
+pub const MAX_RECORDED_ROWS: usize = 1_000_000;
+
 impl TransientSolver {
     /// A TR-BDF2 integrator for `network` (heat capacities read once here).
     pub fn new(network: ThermalNetwork) -> Self {
@@ -1076,7 +1080,10 @@ impl TransientSolver {
     /// steps of at most `dt_s`, recording every `record_every` steps (and
     /// the last). `sources(t_s, temperatures_c, out)` fills the heat
     /// sources at time t from the temperatures at the start of the step
-    /// (explicit in the coupling, exact for time-only dependence).
+    /// (explicit in the coupling, exact for time-only dependence). At most
+    /// [`crate::cancel::MAX_TIME_STEPS`] steps and [`MAX_RECORDED_ROWS`]
+    /// recorded rows (a `ConfigError` naming `dt_s` and `duration_s`, or
+    /// `record_every`); stops with `Error::Interrupted` after a cancel.
     pub fn integrate<F>(
         &mut self,
         initial_c: &[f64],
@@ -1104,9 +1111,20 @@ impl TransientSolver {
         for (i, v) in initial_c.iter().enumerate() {
             finite(&format!("initial_c[{i}]"), *v)?;
         }
-        let steps = (duration_s / dt_s).ceil().max(1.0) as usize;
+        let steps = crate::cancel::step_count(duration_s, dt_s, "dt_s", f64::ceil)?;
         let h = duration_s / steps as f64;
         let every = record_every.max(1);
+        if steps / every > MAX_RECORDED_ROWS {
+            return Err(Error::config(
+                "record_every",
+                record_every,
+                format!(
+                    "{steps} steps recorded every {every} are more than {MAX_RECORDED_ROWS} rows; \
+                     use record_every >= {}",
+                    steps.div_ceil(MAX_RECORDED_ROWS)
+                ),
+            ));
+        }
         let mut t = initial_c.to_vec();
         for (i, node) in self.network.nodes.iter().enumerate() {
             if let NodeKind::Boundary { temperature_c } = node.kind {
@@ -1120,6 +1138,8 @@ impl TransientSolver {
         };
         let mut s = [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
         for k in 0..steps {
+            crate::cancel::check()?;
+            crate::cancel::advance();
             let t0 = k as f64 * h;
             for (j, frac) in [0.0, GAMMA, 1.0].into_iter().enumerate() {
                 sources(t0 + frac * h, &t, &mut s[j])?;

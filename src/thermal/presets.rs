@@ -47,8 +47,9 @@ use std::f64::consts::PI;
 use super::heat::{bearing_heat, load_moment_n_m, viscous_moment_n_m, HeatSplit};
 use super::lubricant::Lubricant;
 use super::network::{Convection, NodeId, ThermalNetwork, POHLHAUSEN_LOCAL, SEED_A_NATURAL_W_M2_K125};
-use crate::bearing::Bearing;
-use crate::effects::{Effect, EffectSet};
+use super::row_heat::oil_temperature_c;
+use crate::bearing::{Bearing, BearingModel, SolveOptions};
+use crate::effects::EffectSet;
 use crate::error::{positive, Result};
 use crate::materials::Material;
 use crate::units::rpm_to_rad_s;
@@ -88,27 +89,97 @@ pub enum BallConduction {
         /// contact ellipse is taken at the free contact angle.
         contact_load_n: f64,
     },
+    /// The same constriction, with each row's own contact under the axial
+    /// preload of the spindle ([`SpindleParams::preload_n`]): the row's
+    /// static equilibrium under that preload ([`preloaded_contact`], its
+    /// own ball count, conformities and free angle) gives the contact load
+    /// Q and the operating contact angle of its balls, and the Hertz
+    /// ellipse at that load and angle sets the spot size. It follows the
+    /// preload (c grows as Q^(1/3)) and differs between the rows. The
+    /// network's conductances are built once per preload, so the contact
+    /// is the standstill one: speed and temperature change Q by tens of
+    /// percent at most, c by a third of that.
+    HertzAtPreload,
 }
 
-/// Ball-to-raceway resistance of all Z balls of one bearing [K/W].
+/// Resistance of the Z Hertz contact spots of one raceway at contact load
+/// `contact_load_n` and contact angle `contact_angle_rad` (module docs of
+/// [`BallConduction::HertzConstriction`]) [K/W].
+pub fn hertz_constriction_k_per_w(
+    bearing: &Bearing,
+    inner: bool,
+    contact_load_n: f64,
+    contact_angle_rad: f64,
+) -> Result<f64> {
+    positive("contact_load_n", contact_load_n)?;
+    let (contact, ring) = if inner {
+        (bearing.inner_contact(contact_angle_rad)?, &bearing.inner_ring)
+    } else {
+        (bearing.outer_contact(contact_angle_rad)?, &bearing.outer_ring)
+    };
+    let c = (contact.semi_major(contact_load_n) * contact.semi_minor(contact_load_n)).sqrt();
+    let per_contact = 1.0 / (4.0 * bearing.ball.conductivity_w_mk * c) + 1.0 / (4.0 * ring.conductivity_w_mk * c);
+    Ok(per_contact / bearing.geometry.ball_count as f64)
+}
+
+/// Contact of one row at standstill under the axial load `axial_n`: mean
+/// (inner, outer) contact load \[N\] and mean (inner, outer) contact angle
+/// \[rad\] of its balls, from the static equilibrium of the ball solver.
+pub fn preloaded_contact(bearing: &Bearing, axial_n: f64) -> Result<([f64; 2], [f64; 2])> {
+    positive("preload_n", axial_n)?;
+    let model = BearingModel::new(bearing)?;
+    let state = model.solve(&[0.0, 0.0, axial_n, 0.0, 0.0], 0.0, &SolveOptions::default())?;
+    let n = state.balls.len().max(1) as f64;
+    let mean = |f: &dyn Fn(&crate::bearing::BallState) -> f64| state.balls.iter().map(f).sum::<f64>() / n;
+    Ok((
+        [mean(&|b| b.inner_load_n), mean(&|b| b.outer_load_n)],
+        [
+            mean(&|b| b.inner_contact_angle_rad),
+            mean(&|b| b.outer_contact_angle_rad),
+        ],
+    ))
+}
+
+/// Ball-to-raceway resistance of all Z balls of one bearing [K/W];
+/// [`BallConduction::HertzAtPreload`] needs the preload: use
+/// [`row_ball_raceway_resistance_k_per_w`].
 pub fn ball_raceway_resistance_k_per_w(bearing: &Bearing, inner: bool, model: BallConduction) -> Result<f64> {
     let g = &bearing.geometry;
     let z = g.ball_count as f64;
     match model {
         BallConduction::SeedA => Ok(1.0 / (z * bearing.ball.conductivity_w_mk * PI * g.ball_diameter_m)),
         BallConduction::HertzConstriction { contact_load_n } => {
-            positive("contact_load_n", contact_load_n)?;
-            let alpha = g.free_contact_angle_rad;
-            let (contact, ring) = if inner {
-                (bearing.inner_contact(alpha)?, &bearing.inner_ring)
-            } else {
-                (bearing.outer_contact(alpha)?, &bearing.outer_ring)
-            };
-            let c = (contact.semi_major(contact_load_n) * contact.semi_minor(contact_load_n)).sqrt();
-            let per_contact =
-                1.0 / (4.0 * bearing.ball.conductivity_w_mk * c) + 1.0 / (4.0 * ring.conductivity_w_mk * c);
-            Ok(per_contact / z)
+            hertz_constriction_k_per_w(bearing, inner, contact_load_n, g.free_contact_angle_rad)
         }
+        BallConduction::HertzAtPreload => Err(crate::error::Error::config(
+            "ball_conduction",
+            "HertzAtPreload",
+            "the contact at the preload needs the preload: use row_ball_raceway_resistance_k_per_w",
+        )),
+    }
+}
+
+/// Ball-to-raceway resistances (inner, outer) of one row under the axial
+/// preload `preload_n` [K/W]: [`BallConduction::HertzAtPreload`] from that
+/// row's own preloaded contact, the other models as
+/// [`ball_raceway_resistance_k_per_w`].
+pub fn row_ball_raceway_resistance_k_per_w(
+    bearing: &Bearing,
+    model: BallConduction,
+    preload_n: f64,
+) -> Result<(f64, f64)> {
+    match model {
+        BallConduction::HertzAtPreload => {
+            let (q, alpha) = preloaded_contact(bearing, preload_n)?;
+            Ok((
+                hertz_constriction_k_per_w(bearing, true, q[0], alpha[0])?,
+                hertz_constriction_k_per_w(bearing, false, q[1], alpha[1])?,
+            ))
+        }
+        m => Ok((
+            ball_raceway_resistance_k_per_w(bearing, true, m)?,
+            ball_raceway_resistance_k_per_w(bearing, false, m)?,
+        )),
     }
 }
 
@@ -330,8 +401,8 @@ pub struct SpindleParams {
     pub lubrication_factor_f0: f64,
     /// Axial preload per bearing \[N\].
     pub preload_n: f64,
-    /// Ball-raceway conduction model (default: Hertz constriction at the
-    /// preload contact load Q = Fa / (Z sin alpha0)).
+    /// Ball-raceway conduction model (default: Hertz constriction at each
+    /// row's own contact under `preload_n`, [`BallConduction::HertzAtPreload`]).
     pub ball_conduction: BallConduction,
     /// Stator copper loss \[W\], put on the stator node; constant with speed.
     pub stator_copper_w: f64,
@@ -363,17 +434,10 @@ impl SpindleParams {
     /// conduction through the Hertz spots (the seed A bulk form ignores the
     /// constriction and makes balls and rings nearly isothermal).
     pub fn seed_b() -> Result<Self> {
-        let front_bearing = Bearing::preset("7009C-ceramic")?;
-        let (z, a0) = (
-            front_bearing.geometry.ball_count as f64,
-            front_bearing.geometry.free_contact_angle_rad,
-        );
         Ok(SpindleParams {
-            front_bearing,
+            front_bearing: Bearing::preset("7009C-ceramic")?,
             rear_bearing: Bearing::preset("7008C-ceramic")?,
-            ball_conduction: BallConduction::HertzConstriction {
-                contact_load_n: 300.0 / (z * a0.sin()),
-            },
+            ball_conduction: BallConduction::HertzAtPreload,
             front_span_m: 0.12,
             rear_span_m: 0.12,
             nose_length_m: 0.06,
@@ -508,9 +572,13 @@ impl SpindleNetwork {
             &steel,
             annulus_volume(0.0, dsf, p.nose_length_m + p.front_span_m - 0.5 * p.rotor_length_m),
         );
+        // The rear journal runs from the rotor core to the rear pair centre
+        // and on to the pair's back face: a back-to-back pair is two bearings
+        // wide, so one rear bearing width beyond its centre (the front
+        // journal's counterpart is the nose).
         let c_sr = mc(
             &steel,
-            annulus_volume(0.0, dsr, p.rear_span_m - 0.5 * p.rotor_length_m + 0.03),
+            annulus_volume(0.0, dsr, p.rear_span_m - 0.5 * p.rotor_length_m + rb.geometry.width_m),
         );
         let c_rotor = mc(&steel, annulus_volume(0.0, p.rotor_diameter_m, p.rotor_length_m));
         let stator_bore = p.rotor_diameter_m + 2.0 * p.air_gap_m;
@@ -583,8 +651,8 @@ impl SpindleNetwork {
                 shaft_r + (di / g.bore_m).ln() / (2.0 * PI * b.inner_ring.conductivity_w_mk * w2),
             )?;
             // Two bearings in parallel: half the one-bearing resistance.
-            let rbi = 0.5 * ball_raceway_resistance_k_per_w(b, true, p.ball_conduction)?;
-            let rbo = 0.5 * ball_raceway_resistance_k_per_w(b, false, p.ball_conduction)?;
+            let (rbi, rbo) = row_ball_raceway_resistance_k_per_w(b, p.ball_conduction, p.preload_n)?;
+            let (rbi, rbo) = (0.5 * rbi, 0.5 * rbo);
             n.add_resistance(&format!("{tag}_balls-inner"), nodes[1], nodes[0], rbi)?;
             n.add_resistance(&format!("{tag}_balls-outer"), nodes[1], nodes[2], rbo)?;
             n.add_resistance(
@@ -729,7 +797,8 @@ impl SpindleNetwork {
     /// Heat sources [W per node] at `speed_rpm`. With
     /// `temperature_dependent_viscosity` on and node temperatures given,
     /// the oil viscosity is taken at each pair's ball temperature, else at
-    /// 40 C (the grade's reference temperature).
+    /// the oil-air supply temperature (the rule of every heat model,
+    /// [`super::row_heat::oil_temperature_c`]).
     pub fn sources_w(&self, speed_rpm: f64, temperatures_c: Option<&[f64]>, effects: EffectSet) -> Result<Vec<f64>> {
         let p = &self.params;
         positive("speed_rpm", speed_rpm)?;
@@ -737,10 +806,8 @@ impl SpindleNetwork {
         let r = speed_rpm / p.loss_reference_rpm;
         s[self.stator] = p.stator_copper_w + p.stator_iron_w * r.powf(1.5);
         s[self.rotor] = p.rotor_copper_w + p.rotor_mechanical_w * r * r;
-        let oil_at = |node: NodeId| match temperatures_c {
-            Some(t) if effects.has(Effect::TemperatureDependentViscosity) => t[node],
-            _ => 40.0,
-        };
+        let oil_at =
+            |node: NodeId| oil_temperature_c(effects, p.oil_air_temperature_c, temperatures_c.map(|t| t[node]));
         for (b, [i, bl, o]) in [
             (&p.front_bearing, [self.front_inner, self.front_balls, self.front_outer]),
             (&p.rear_bearing, [self.rear_inner, self.rear_balls, self.rear_outer]),
@@ -816,7 +883,7 @@ mod tests {
         let total: f64 = s.iter().sum();
         assert!((out - total).abs() < 1e-8 * total, "{out} {total}");
         // Fixed point: the sources at T* reproduce T* in a fresh solve, and
-        // they differ from the 40 C estimate (viscosity really moved).
+        // they differ from the supply-temperature estimate (viscosity really moved).
         let again = SteadySolver::new(sp.network.clone()).solve(&s, speed).unwrap();
         for (a, b) in again.temperatures_c.iter().zip(v) {
             assert!((a - b).abs() < 1e-7, "{a} {b}");

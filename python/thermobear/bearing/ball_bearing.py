@@ -18,11 +18,13 @@ from typing import TYPE_CHECKING, Any, Optional, Sequence
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .. import _native
+from .. import _native, plausibility
+from .. import _validate as v
 from .._deprecation import renamed_kwargs, warn_renamed
 from .._limits import cap_threads
 from .._names import renamed_columns
 from .._types import RacewayControl
+from ..errors import ConvergenceError
 from .material import Material, _native_material
 
 if TYPE_CHECKING:
@@ -34,7 +36,20 @@ def _effects_arg(effects: Optional[Sequence[str]]) -> Optional[list[str]]:
         return None
     if isinstance(effects, str):
         return [effects]
-    return [str(e) for e in effects]
+    try:
+        names = list(effects)
+    except TypeError:
+        raise v.fail("effects", effects, "a name or a list of effect names") from None
+    return [v.text("effects", e) for e in names]
+
+
+#: The raceway-control choices.
+_CONTROLS = ("outer", "inner")
+
+
+def _dim(name: str, mm: Any) -> float:
+    """A length of a bearing in mm: finite and above zero."""
+    return v.real(name, mm, 0.0, open_lo=True)
 
 
 class Bearing:
@@ -80,15 +95,15 @@ class Bearing:
         clearance, cos(alpha0) = 1 - Pd / (2 (f_i + f_o - 1) D)."""
         return cls(
             _native.Bearing.deep_groove(
-                int(ball_count),
-                float(ball_diameter_mm),
-                float(pitch_diameter_mm),
-                float(inner_conformity),
-                float(outer_conformity),
-                float(diametral_clearance_mm),
-                float(bore_mm),
-                float(outer_diameter_mm),
-                float(width_mm),
+                v.whole("ball_count", ball_count, 1, 10_000),
+                _dim("ball_diameter_mm", ball_diameter_mm),
+                _dim("pitch_diameter_mm", pitch_diameter_mm),
+                v.real("inner_conformity", inner_conformity, 0.5, open_lo=True),
+                v.real("outer_conformity", outer_conformity, 0.5, open_lo=True),
+                v.real("diametral_clearance_mm", diametral_clearance_mm, 0.0),
+                _dim("bore_mm", bore_mm),
+                _dim("outer_diameter_mm", outer_diameter_mm),
+                _dim("width_mm", width_mm),
                 _native_material(ring_material),
                 _native_material(ball_material),
                 name,
@@ -115,15 +130,15 @@ class Bearing:
         """An angular-contact bearing from its free contact angle."""
         return cls(
             _native.Bearing.angular_contact(
-                int(ball_count),
-                float(ball_diameter_mm),
-                float(pitch_diameter_mm),
-                float(inner_conformity),
-                float(outer_conformity),
-                float(free_contact_angle_deg),
-                float(bore_mm),
-                float(outer_diameter_mm),
-                float(width_mm),
+                v.whole("ball_count", ball_count, 1, 10_000),
+                _dim("ball_diameter_mm", ball_diameter_mm),
+                _dim("pitch_diameter_mm", pitch_diameter_mm),
+                v.real("inner_conformity", inner_conformity, 0.5, open_lo=True),
+                v.real("outer_conformity", outer_conformity, 0.5, open_lo=True),
+                v.real("free_contact_angle_deg", free_contact_angle_deg, 0.0, 90.0),
+                _dim("bore_mm", bore_mm),
+                _dim("outer_diameter_mm", outer_diameter_mm),
+                _dim("width_mm", width_mm),
                 _native_material(ring_material),
                 _native_material(ball_material),
                 name,
@@ -173,7 +188,23 @@ class Bearing:
     ) -> dict[str, float]:
         """Hertz contact of one ball on the ``"inner"``/``"outer"`` raceway
         (exact ellipticity, or Hamrock-Brewe closed forms with ``exact=False``)."""
-        return dict(self._b.contact(raceway, float(contact_angle_deg), float(load_n), bool(exact)))
+        out = dict(
+            self._b.contact(
+                v.choice("raceway", raceway, ("inner", "outer")),
+                v.real("contact_angle_deg", contact_angle_deg, -90.0, 90.0),
+                v.real("load_n", load_n, 0.0),
+                v.flag("exact", exact),
+            )
+        )
+        a_mm = out["semi_major_m"] * 1e3  # NaN or inf past overflow: refused as well
+        if not a_mm <= self.geometry["ball_diameter_mm"]:
+            raise v.fail(
+                "load_n",
+                load_n,
+                f"a load whose contact ellipse fits the ball (semi-major axis {a_mm:.3g} mm "
+                f"against a {self.geometry['ball_diameter_mm']:g} mm ball: Hertz theory fails)",
+            )
+        return out
 
     # -- solving -------------------------------------------------------
     @renamed_kwargs(moment_nmm=("moment_n_m", lambda v: float(v) / 1000.0))
@@ -201,15 +232,24 @@ class Bearing:
         needed to hold it is a reaction). With ``misalignment_rad=None`` the
         tilt is free and solved so that the bearing carries ``moment_n_m``
         (N m; the older ``moment_nmm`` in N mm is deprecated and converted)."""
-        raw = self._b.solve(
-            float(axial_n),
-            float(radial_n),
-            float(moment_n_m),
-            float(speed_rpm),
-            _effects_arg(effects),
-            raceway_control,
-            None if misalignment_rad is None else float(misalignment_rad),
-        )
+        loads = {
+            "axial_n": v.real("axial_n", axial_n),
+            "radial_n": v.real("radial_n", radial_n),
+            "moment_n_m": v.real("moment_n_m", moment_n_m),
+            "speed_rpm": v.real("speed_rpm", speed_rpm, 0.0),
+        }
+        tilt = self._tilt(misalignment_rad)
+        try:
+            raw = self._b.solve(
+                *loads.values(),
+                _effects_arg(effects),
+                v.choice("raceway_control", raceway_control, _CONTROLS),
+                tilt,
+            )
+        except ConvergenceError as e:
+            v.name_inputs(e, {**loads, "misalignment_rad": tilt})
+            raise
+        plausibility.check_solution(self, raw, loads, tilt)
         return BearingSolution(raw)
 
     def solve_many(
@@ -249,19 +289,27 @@ class Bearing:
         names = ("axial_n", "radial_n", "moment_n_m", "speed_rpm")
         frame = operating_frame(_moment_in_n_m(points), names)
         arrays = [column_array(frame, c) for c in names]
-        arrays[2] = arrays[2] * 1000.0  # the native call takes N mm
+        options = dict(
+            effects=_effects_arg(effects),
+            raceway_control=v.choice("raceway_control", raceway_control, _CONTROLS),
+            misalignment_rad=self._tilt(misalignment_rad),
+        )
         raw = _native.solve_many(
             self._b,
             arrays[0],
             arrays[1],
-            arrays[2],
+            arrays[2] * 1000.0,  # the native call takes N mm
             arrays[3],
-            effects=_effects_arg(effects),
-            raceway_control=raceway_control,
-            misalignment_rad=None if misalignment_rad is None else float(misalignment_rad),
+            **options,
             threads=cap_threads(threads),
             progress=progress,
         )
+        plausibility.check_speeds(arrays[3], self._pitch_mm(), None)
+        # a row whose contact reaches past the groove is a failed row, as in solve
+        points = dict(zip(names, arrays, strict=True))
+        past = plausibility.rows_past_the_groove(self, raw, points, options)
+        for i, message in past.items():
+            raw["ok"][i], raw["error_kind"][i], raw["error"][i] = False, "ConfigError", message
         return join_inputs(frame, result_frame(raw))
 
     def ring_forces(
@@ -277,13 +325,28 @@ class Bearing:
         return the reaction of the balls on the inner ring
         ``[Fx, Fy, Fz (N), Mx, My (N m)]`` and the tangent stiffness
         ``-d(reaction)/d(displacement)`` (5x5, SI)."""
-        q = [float(v) for v in np.asarray(displacement, dtype=float).ravel()]
+        q = [float(x) for x in v.reals("displacement", displacement)]
         if len(q) != 5:
-            from ..errors import ConfigError
-
-            raise ConfigError(f"invalid displacement = {q}: needs 5 values [dx, dy, dz, tx, ty]")
-        raw = self._b.ring_forces(q, float(speed_rpm), _effects_arg(effects), raceway_control)
+            raise v.fail("displacement", q, "5 values [dx, dy, dz, tx, ty]")
+        raw = self._b.ring_forces(
+            q,
+            v.real("speed_rpm", speed_rpm, 0.0),
+            _effects_arg(effects),
+            v.choice("raceway_control", raceway_control, _CONTROLS),
+        )
         return np.asarray(raw["reaction"]), np.asarray(raw["stiffness_matrix"])
+
+    def _pitch_mm(self) -> float:
+        """The pitch diameter in mm (for the speed factor n dm)."""
+        return plausibility._geometry(self)["pitch_diameter_mm"]
+
+    def _tilt(self, misalignment_rad: Any) -> Optional[float]:
+        """``misalignment_rad`` checked: a number or None, within the groove
+        (warned past the plausibility limit)."""
+        tilt = v.optional_real("misalignment_rad", misalignment_rad)
+        if tilt:
+            plausibility.check_misalignment(tilt, plausibility._geometry(self))
+        return tilt
 
     def thermal_state(
         self,
@@ -312,6 +375,8 @@ def _moment_in_n_m(points: Any) -> Any:
     """``points`` with an older ``moment_nmm`` column (N mm) as ``moment_n_m``."""
     import polars as pl
 
+    if not isinstance(points, (pl.DataFrame, dict)):
+        return points  # operating_frame says what it takes
     cols = points.columns if isinstance(points, pl.DataFrame) else list(points)
     if "moment_nmm" not in cols:
         return points

@@ -63,6 +63,28 @@ def _threads_arg(text: str) -> int:
     return n
 
 
+def _formats_arg(text: str) -> tuple[str, ...]:
+    """``--format``: a comma list of figure formats (png, pdf, svg)."""
+    from ..errors import ConfigError
+    from ..studies.output import parse_formats
+
+    try:
+        return parse_formats(text)
+    except ConfigError as e:
+        raise argparse.ArgumentTypeError(str(e)) from None
+
+
+def _dpi_arg(text: str) -> float:
+    """``--dpi``: dots per inch of a PNG figure (10 to 2400)."""
+    from ..errors import ConfigError
+    from ..studies.output import check_dpi
+
+    try:
+        return check_dpi(text)
+    except ConfigError as e:
+        raise argparse.ArgumentTypeError(str(e)) from None
+
+
 def _names_arg(text: str) -> list[str]:
     """A comma-separated list of names (``NAME[,NAME...]``)."""
     names = [t.strip() for t in text.split(",") if t.strip()]
@@ -124,7 +146,7 @@ def _thread_limit(threads: Optional[int]) -> Iterator[Optional[int]]:
 def _cmd_demo(args: argparse.Namespace) -> int:
     from ..studies.demo import run_demo
 
-    out = run_demo(Path(args.out), quick=args.quick)
+    out = run_demo(Path(args.out), quick=args.quick, formats=args.format, dpi=args.dpi)
     print(f"thermobear demo: results written to {out.resolve()}")
     return EXIT_OK
 
@@ -316,7 +338,9 @@ def _add_study(st: argparse.ArgumentParser) -> None:
     st.add_argument("--scheduler", default=None, help="Dask scheduler address (tcp://host:8786)")
     st.add_argument("--no-progress", action="store_true", help="no progress bar")
     st.add_argument(
-        "--overwrite", action="store_true", help="replace the results of another grid in --out"
+        "--overwrite",
+        action="store_true",
+        help="start --out afresh, whatever it holds (another grid, damaged files)",
     )
 
 
@@ -347,6 +371,14 @@ def build_parser() -> argparse.ArgumentParser:
     d = add("demo", "run the built-in seed studies and write tables and figures", True, _cmd_demo)
     d.add_argument("--out", default="thermobear-out", help="output folder (default: %(default)s)")
     d.add_argument("--quick", action="store_true", help="coarser sweeps (for tests)")
+    d.add_argument(
+        "--format", type=_formats_arg, default=("png",), metavar="FMT[,FMT...]",
+        help="figure formats, a comma list of png, pdf, svg (default: png)",
+    )  # fmt: skip
+    d.add_argument(
+        "--dpi", type=_dpi_arg, default=200.0, metavar="DPI",
+        help="resolution of PNG figures in dots per inch (default: 200)",
+    )  # fmt: skip
     s = add("solve", "solve a system description (TOML)", True, _cmd_solve)
     s.add_argument("config", help="path to the .toml system description")
     s.add_argument("--out", default="thermobear-out", help="output folder (default: %(default)s)")
@@ -392,13 +424,24 @@ def _quiet_stdout() -> None:
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """Run the command line on ``argv`` (default: ``sys.argv[1:]``) and
     return the exit status (see ``EPILOG``); ``--help`` and
-    ``--version`` return 0, a usage error 2."""
+    ``--version`` return 0, a usage error 2. A reader that stops early
+    (``| head -c 1``, a closed pipe), at any point (help, output, error
+    message), ends the run quietly with 141."""
+    try:
+        return _main(argv)
+    except BrokenPipeError:
+        _quiet_stdout()
+        return EXIT_BROKEN_PIPE
+
+
+def _main(argv: Optional[Sequence[str]]) -> int:
     from ..errors import ThermobearError
 
     parser = build_parser()
     try:
         args = parser.parse_args(argv)
     except SystemExit as e:  # --help, --version (0) or a usage error (2)
+        sys.stdout.flush()  # argparse ignores a closed pipe; the flush does not
         return e.code if isinstance(e.code, int) else EXIT_USAGE
     debug = getattr(args, "debug", False)
     try:
@@ -409,8 +452,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         sys.stdout.flush()
         return code
     except BrokenPipeError:
-        _quiet_stdout()
-        return EXIT_BROKEN_PIPE
+        raise  # main: quietly
     except ThermobearError as e:
         if debug:
             traceback.print_exc()

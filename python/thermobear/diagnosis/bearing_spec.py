@@ -9,10 +9,11 @@ from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
 import numpy as np
 
 from ..errors import ConfigError, ThermobearError
+from ..thermal.oil_supply import SUPPLY_WITHOUT_KEYWORDS
 from .candidates import Candidate, _candidate_list, load_level_candidates
 from .measurements import QUANTITIES
 from .protocol import ModelSpec, register_kind
-from .registry import _THERMAL_DEFAULTS, LOAD_SCALE_OPTIONS
+from .registry import _THERMAL_DEFAULTS, LOAD_SCALE_OPTIONS, supply_given
 
 if TYPE_CHECKING:
     import polars
@@ -26,7 +27,10 @@ class BearingModelSpec(ModelSpec):
     ``ambient_temperature_c``, ``housing_material``, ``raceway_control``,
     ``extra_heat_w``, ``housing_conductance_scale``, ``churning_oil_fraction``,
     ``heat_model``, ``lubrication``, ``sliding_friction_ehl``,
-    ``replenishment_krs``) and the load scales ``axial_load_scale``,
+    ``replenishment_krs`` and the oil-supply keywords such as
+    ``oil_flow_cm3_per_min``, ``oil_flow_scale``,
+    ``cavity_fraction_speed_exponent``; with a supply the drag follows it
+    and ``churning_oil_fraction`` is left unset) and the load scales ``axial_load_scale``,
     ``radial_load_scale`` (default 1; per level ``axial_load_scale@<N>``)
     applied to the stated loads of the measured conditions.
     Evaluates every quantity of ``QUANTITIES`` at given conditions; each
@@ -56,6 +60,9 @@ class BearingModelSpec(ModelSpec):
         self.bearing = bearing
         self.effects = tuple(sorted(eff))
         self.options = {**_THERMAL_DEFAULTS, **_lubrication_options(bearing, options), **options}
+        if supply_given(options) and "churning_oil_fraction" not in options:
+            self.options["churning_oil_fraction"] = None  # the drag follows the supply
+        _check_supply(self.options)
         self._cache: dict = {}
 
     @classmethod
@@ -72,6 +79,7 @@ class BearingModelSpec(ModelSpec):
         new.effects = tuple(sorted(set(self.effects) | set(add_effects)))
         _check_option_names(options)
         new.options = {**self.options, **options}
+        _check_supply(new.options)
         new._cache = self._cache
         return new
 
@@ -170,26 +178,42 @@ def _check_option_names(options: dict) -> None:
         raise ConfigError(f"invalid option = {k!r}: known: {', '.join(sorted(_THERMAL_DEFAULTS))}")
 
 
+def _check_supply(options: dict) -> None:
+    """A fixed drag fraction is the override of an oil supply: both at once
+    are refused, naming the fixed fraction (as ``thermal_state`` does)."""
+    x = options.get("churning_oil_fraction")
+    if x is not None and supply_given(options):
+        raise ConfigError(
+            f"invalid churning_oil_fraction = {x!r}: a fixed cavity oil fraction overrides "
+            "the oil supply given; give one or the other"
+        )
+
+
 def _lubrication_options(bearing: Any, options: dict) -> dict:
     """With a ``lubrication`` method among ``options``, the f0 and drag
-    oil fraction it sets (docs/concepts/physics.md §9) where not given."""
+    oil fraction it sets (docs/concepts/physics.md §9) where not given:
+    none (unset) when the drag follows an oil supply -- supply keywords
+    given, or an oil bath (``SUPPLY_WITHOUT_KEYWORDS``) -- so that the spec
+    runs ``thermal_state``'s own drag."""
     from .. import _native
 
     lub = options.get("lubrication")
     if lub is None:
         return {}
     d = _native.lubrication_defaults(str(lub), bearing.bearing_type.replace("-", "_"))
-    return {
-        "lubrication_factor_f0": float(d["lubrication_factor_f0"]),
-        "churning_oil_fraction": float(d["oil_volume_fraction"]),
-    }
+    out: dict[str, Optional[float]] = {"lubrication_factor_f0": float(d["lubrication_factor_f0"])}
+    if supply_given(options) or str(lub) in SUPPLY_WITHOUT_KEYWORDS:
+        out["churning_oil_fraction"] = None  # the drag follows the supply, as in thermal_state
+    else:
+        out["churning_oil_fraction"] = float(d["oil_volume_fraction"])
+    return out
 
 
 def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, dict]:
     """The baseline [`BearingModelSpec`][thermobear.BearingModelSpec] of a system description
     ([bearing], [model] effects, raceway_control, extra_heat_w,
-    housing_conductance_scale, churning_oil_fraction, heat_model and
-    lubrication; the other thermal options take their
+    housing_conductance_scale, churning_oil_fraction, lubrication_factor_f0, heat_model,
+    lubrication and the [model.oil_supply] keys; the other thermal options take their
     [`thermobear.thermal_state`][thermobear.thermal_state] defaults) and its [operating]
     table (loads for measurements that give none)."""
     from ..bearing import Bearing
@@ -201,12 +225,18 @@ def model_from_toml(path_or_text: Union[str, Path]) -> tuple[BearingModelSpec, d
     opts = {}
     if "raceway_control" in mdl:
         opts["raceway_control"] = mdl["raceway_control"]
-    for key in ("extra_heat_w", "housing_conductance_scale", "churning_oil_fraction"):
+    for key in (
+        "extra_heat_w",
+        "housing_conductance_scale",
+        "churning_oil_fraction",
+        "lubrication_factor_f0",
+    ):
         if key in mdl:
             opts[key] = float(mdl[key])
     for key in ("heat_model", "lubrication"):
         if key in mdl:
             opts[key] = str(mdl[key])
+    opts.update(mdl.get("oil_supply", {}))
     spec = BearingModelSpec(Bearing.from_toml(text), effects=mdl.get("effects"), **opts)
     return spec, cfg.get("operating", {})
 

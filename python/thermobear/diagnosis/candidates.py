@@ -19,10 +19,12 @@ from .registry import (
     _HOUSING_MATERIALS,
     _PARAMETERS,
     _THERMAL_DEFAULTS,
+    FLOW_KEYWORDS,
     HEAT_MODELS,
     LOAD_SCALE_BOUNDS,
     NOT_IN_BEARING,
     SKF_PARAMETERS,
+    SUPPLY_PARAMETERS,
 )
 
 if TYPE_CHECKING:
@@ -94,6 +96,8 @@ def _candidate_list(
     lub_bounds = _lubrication_bounds(model)
     for name, opt, unit, lo, hi, is_off, role, desc in _PARAMETERS:
         lo, hi = lub_bounds.get(opt, (lo, hi))
+        if opts[opt] is None:  # the fixed drag fraction under an oil supply
+            continue
         base = float(opts[opt])
         if is_off:
             null, lo_, hi_ = 0.0, lo, hi
@@ -116,29 +120,70 @@ def _candidate_list(
                 role=role,
             )
         )
-    for mat in _HOUSING_MATERIALS:
-        if mat != str(opts["housing_material"]):
-            name = f"housing_material:{mat}"
-            out.append(
-                Candidate(
-                    name,
-                    "switch",
-                    "model",
-                    "housing_is_" + mat.replace("-", "_"),
-                    "1",
-                    0.0,
-                    1.0,
-                    0.0,
-                    f"housing conductance/expansion of {mat}",
-                    temps + mech,
-                    option="housing_material",
-                    role="calibration",
-                )
-            )
+    out += _housing_candidates(str(opts["housing_material"]), temps + mech)
     out += heat_model_candidates(opts, tuple(QUANTITIES))
+    out += supply_candidates(opts, tuple(QUANTITIES))
     out += sensor_offset_candidates(quantities, QUANTITIES)
     out += sensor_gain_candidates(quantities, QUANTITIES)
     return out
+
+
+def _housing_candidates(baseline_material: str, affects: tuple) -> list[Candidate]:
+    """The other housing materials as switches (a baseline input)."""
+    return [
+        Candidate(
+            f"housing_material:{mat}",
+            "switch",
+            "model",
+            "housing_is_" + mat.replace("-", "_"),
+            "1",
+            0.0,
+            1.0,
+            0.0,
+            f"housing conductance/expansion of {mat}",
+            affects,
+            option="housing_material",
+            role="calibration",
+        )
+        for mat in _HOUSING_MATERIALS
+        if mat != baseline_material
+    ]
+
+
+def supply_candidates(opts: dict, affects: tuple) -> list[Candidate]:
+    """The oil-supply inputs (``SUPPLY_PARAMETERS``: flow scale, speed
+    exponent of the cavity fraction) when the baseline states a jet,
+    oil-air or oil-mist flow (``FLOW_KEYWORDS``); none otherwise. The null
+    is the baseline's value (default 1, Parker's correlation as published)."""
+    if all(opts.get(k) is None for k in FLOW_KEYWORDS):
+        return []
+    return [
+        _calibration_candidate(
+            opt, unit, lo, hi, default if opts.get(opt) is None else float(opts[opt]), desc, affects
+        )
+        for opt, unit, lo, hi, default, desc in SUPPLY_PARAMETERS
+    ]
+
+
+def _calibration_candidate(
+    opt: str, unit: str, lo: float, hi: float, null: float, desc: str, affects: tuple
+) -> Candidate:
+    """A model option calibrated within ``[lo, hi]`` (widened to hold its
+    null, the baseline's value)."""
+    return Candidate(
+        opt,
+        "parameter",
+        "model",
+        opt,
+        unit,
+        min(lo, null),
+        max(hi, null),
+        null,
+        desc,
+        affects,
+        option=opt,
+        role="calibration",
+    )  # fmt: skip
 
 
 def _lubrication_bounds(model: Optional[_BearingBaseline]) -> dict:
@@ -185,22 +230,8 @@ def heat_model_candidates(opts: dict, affects: tuple, skf_inputs: bool = True) -
     ]
     if base == "skf" and skf_inputs:
         for opt, unit, lo, hi, desc in SKF_PARAMETERS:
-            null = _skf_null(opts, opt)
             out.append(
-                Candidate(
-                    opt,
-                    "parameter",
-                    "model",
-                    opt,
-                    unit,
-                    min(lo, null),
-                    max(hi, null),
-                    null,
-                    desc,
-                    affects,
-                    option=opt,
-                    role="calibration",
-                )  # fmt: skip
+                _calibration_candidate(opt, unit, lo, hi, _skf_null(opts, opt), desc, affects)
             )
     return out
 
@@ -334,8 +365,11 @@ def candidates(
     (every effect is listed)."""
     import polars as pl
 
+    from .. import _validate as val
+
     model = None if model is None else as_spec(model)
     table = QUANTITIES if model is None else model.quantities
+    quantities = val.names("quantities", quantities, one=True)
     for q in quantities:
         if q not in table:
             raise ConfigError(f"invalid quantity = {q!r}: known: {', '.join(table)}")

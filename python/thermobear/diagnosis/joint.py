@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any, Protocol, Sequence
 
 import numpy as np
 
+from .. import _validate as val
 from ..errors import ConfigError, ThermobearError
 from .calibrated import calibration_models
 from .measurements import prepare_measurements
@@ -121,6 +122,8 @@ class _Slot:
 
 
 def _sets(datasets) -> list[tuple[str, Any, Any]]:
+    if not isinstance(datasets, (dict, list, tuple)):
+        raise val.fail("datasets", datasets, "a list or dict of (model, measured) pairs")
     items = datasets.items() if isinstance(datasets, dict) else enumerate(datasets)
     out = []
     for label, pair in items:
@@ -291,7 +294,8 @@ def calibrate(datasets, parameters: Sequence[str], per_set: Sequence[str] = ()) 
     [`Calibration`][thermobear.Calibration] (see the module docstring for the statistics)."""
     sets = _sets(datasets)
     data = [prepare_measurements(m, spec.quantities, None) for _, spec, m in sets]
-    slots = _slots(sets, data, list(parameters), list(per_set))
+    names = val.names("parameters", parameters, one=True)
+    slots = _slots(sets, data, names, val.names("per_set", per_set, one=True))
     prob = _Problem(sets, data, slots)
     chi_before = prob.chi2(prob.null)
     theta, chi_min, jac = _best_fit(prob)

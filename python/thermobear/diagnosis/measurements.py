@@ -5,6 +5,7 @@ and the held-out points."""
 
 from __future__ import annotations
 
+import difflib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
@@ -37,6 +38,60 @@ QUANTITIES: dict[str, tuple[str, float, tuple[float, float], float, bool]] = {
     "axial_displacement_um": ("axial_displacement_um", 1.0, (-1e4, 1e4), 0.5, False),
     "inner_contact_angle_deg": ("inner_contact_angle_max_deg", 1.0, (0.0, 90.0), 0.2, False),
 }  # fmt: skip
+
+#: The columns a measurement table may have; any other is refused (a
+#: misspelt ``RADIAL_N`` must not become a radial load of 0).
+KNOWN_COLUMNS = (
+    "speed_rpm",
+    "axial_n",
+    "preload_n",
+    "radial_n",
+    "quantity",
+    "value",
+    "sigma",
+    "run",
+)
+
+#: Accepted shaft speeds of a measurement [rpm]: above 0 for every quantity
+#: that needs the shaft turning (temperatures, heat, growth, vibration;
+#: ``STATIC_QUANTITIES`` may be measured at standstill), and at most
+#: 500,000 rpm, beyond the fastest ball-bearing machines in service (dental
+#: air turbines, turbomolecular pumps). A value past it is a unit mistake.
+SPEED_RANGE_RPM = (0.0, 500_000.0)
+
+#: Accepted loads of a measurement [N]: axial load or preload 0 .. 1e6 N,
+#: radial load -1e6 .. 1e6 N (a meganewton is far past the static load
+#: rating of any bearing a spindle or gearbox rig carries).
+LOAD_LIMIT_N = 1e6
+
+#: Quantities that can be measured with the shaft at rest (speed 0 allowed).
+STATIC_QUANTITIES = frozenset(
+    {
+        "radial_stiffness_seed_n_per_m",
+        "axial_stiffness_seed_n_per_m",
+        "k_xx_n_per_m",
+        "k_zz_n_per_m",
+        "inner_contact_angle_deg",
+    }
+)
+
+#: The least default sigma of a quantity whose typical uncertainty is
+#: relative, in the quantity's own unit, so that a reading of 0 (or near
+#: it) never gets sigma 0: heat 0.5 W (the resolution of a heat balance on
+#: a rig, assumed); stiffness 2,000 N/m (2 % of the least plausible
+#: stiffness, 1e5 N/m); operating preload 1 N (a load washer's resolution,
+#: assumed); vibration velocity 0.01 mm/s (a vibrometer's noise floor,
+#: assumed). A relative quantity not listed here takes its typical fraction
+#: of 1e-3 times the larger end of its plausible range.
+SIGMA_FLOOR: dict[str, float] = {
+    "heat_w": 0.5,
+    "radial_stiffness_seed_n_per_m": 2e3,
+    "axial_stiffness_seed_n_per_m": 2e3,
+    "k_xx_n_per_m": 2e3,
+    "k_zz_n_per_m": 2e3,
+    "operating_preload_n": 1.0,
+    "velocity_rms_mm_s": 0.01,
+}
 
 #: Older quantity names -> the current ones (accepted with a
 #: ``DeprecationWarning`` for one release).
@@ -89,7 +144,11 @@ def _current_quantities(df: Any) -> Any:
 
 
 def load_measurements(
-    data: Any, quantities: Optional[dict] = None, *, model: Any = None
+    data: Any,
+    quantities: Optional[dict] = None,
+    *,
+    model: Any = None,
+    duplicates: str = "error",
 ) -> polars.DataFrame:
     """Read and check a tidy measurement table (CSV or parquet path, or a
     polars/pandas frame) for a bearing or a spindle. The model the data are
@@ -105,21 +164,113 @@ def load_measurements(
     axial load of a single bearing); optional ``radial_n`` (default 0);
     ``quantity`` (one of ``QUANTITIES``); ``value``; optional ``sigma``
     (same unit as the value; default: the quantity's typical uncertainty);
-    optional ``run`` (label). Raises [`DataError`][thermobear.DataError] for a missing column,
-    an unknown quantity, a non-numeric, NaN or infinite value, a sigma <= 0,
-    a negative speed, and values outside the quantity's plausible range: a
-    ``temperature_c`` quantity whose values are all 200-500 is reported as
-    given in kelvin; stiffness must be 1e5-1e11 N/m (values below look like
-    N/um), heat 0-1e5 W, contact angle 0-90 deg.
+    optional ``run`` (label, kept as text: ``"1"`` and ``"01"`` are two
+    runs). Raises [`DataError`][thermobear.DataError] for a missing column,
+    an unknown column (``KNOWN_COLUMNS``; with the nearest known name), an
+    unknown quantity, a non-numeric, boolean, NaN or infinite value, a
+    sigma <= 0, a speed outside ``SPEED_RANGE_RPM`` (0 only for
+    ``STATIC_QUANTITIES``), a load past ``LOAD_LIMIT_N``, values outside
+    the quantity's plausible range (a ``temperature_c`` quantity whose
+    values are all 200-500 is reported as given in kelvin; stiffness must
+    be 1e5-1e11 N/m (values below look like N/um), heat 0-1e5 W, contact
+    angle 0-90 deg), and duplicate rows (the same quantity at the same
+    speed, loads and run), unless ``duplicates="mean"``: then they are
+    averaged (sigma of the mean sqrt(sum sigma^2) / n). A default sigma is
+    never below the quantity's ``SIGMA_FLOOR``.
     """
+    if duplicates not in ("error", "mean"):
+        raise ConfigError(f"invalid duplicates = {duplicates!r}: 'error' or 'mean'")
     df = _current_quantities(_read_table(data))
+    _known_columns(df)
     table = _registry_for(df, quantities, model)
     preload = any(table is t for t in PRELOAD_REGISTRIES)
     df = _operating_columns(_preload_column(df) if preload else df)
     df = _numeric_columns(df)
     df = _checked_quantities(df, table)
-    df = _with_sigma_and_run(df, table)
+    _checked_conditions(df, "preload_n" if preload else "axial_n")
+    df = _without_duplicates(_with_sigma_and_run(df, table), duplicates)
     return df.rename({"axial_n": "preload_n"}) if preload else df
+
+
+def _known_columns(df: Any) -> None:
+    """Every column one of ``KNOWN_COLUMNS`` (a DataError naming the
+    nearest known one otherwise)."""
+    unknown = [c for c in df.columns if c not in KNOWN_COLUMNS]
+    if not unknown:
+        return
+    parts = []
+    for c in unknown:
+        near = difflib.get_close_matches(str(c).lower(), KNOWN_COLUMNS, n=1, cutoff=0.6)
+        parts.append(f"{c}: did you mean {near[0]}?" if near else f"{c}")
+    raise DataError(
+        f"invalid measurements: unknown column(s) {'; '.join(parts)} "
+        f"(known columns: {', '.join(KNOWN_COLUMNS)})"
+    )
+
+
+def _checked_conditions(df: Any, load_name: str) -> None:
+    """Speeds in ``SPEED_RANGE_RPM`` (above 0 unless every quantity at that
+    row is static) and loads within ``LOAD_LIMIT_N``."""
+    lo, hi = SPEED_RANGE_RPM
+    speed = df["speed_rpm"].to_numpy()
+    moving = ~np.isin(df["quantity"].to_numpy(), list(STATIC_QUANTITIES))
+    bad = (speed > hi) | (moving & (speed <= lo))
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise DataError(
+            f"invalid speed_rpm = {speed[i]:g} in row {i} ({df['quantity'][i]}): the accepted "
+            f"range is {lo:g} < speed_rpm <= {hi:g} (speed 0 only for "
+            f"{', '.join(sorted(STATIC_QUANTITIES))})"
+        )
+    for col, name, least in (("axial_n", load_name, 0.0), ("radial_n", "radial_n", -LOAD_LIMIT_N)):
+        x = df[col].to_numpy()
+        bad = (x < least) | (x > LOAD_LIMIT_N)
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise DataError(
+                f"invalid {name} = {x[i]:g} in row {i}: the accepted range is "
+                f"{least:g} .. {LOAD_LIMIT_N:g} N"
+            )
+
+
+def _without_duplicates(df: Any, duplicates: str) -> Any:
+    """The table with one row per quantity, speed, loads and run: repeats
+    are a DataError naming them (conflicting values shown), or averaged
+    with ``duplicates="mean"``."""
+    import polars as pl
+
+    key = ["speed_rpm", "axial_n", "radial_n", "quantity", "run"]
+    groups = df.group_by(key, maintain_order=True).agg(
+        pl.len().alias("n"),
+        pl.col("value").mean().alias("mean"),
+        (pl.col("sigma").pow(2).sum().sqrt() / pl.len()).alias("sigma_mean"),
+        pl.col("value").alias("values"),
+    )
+    repeated = groups.filter(pl.col("n") > 1)
+    if repeated.height == 0:
+        return df
+    if duplicates == "mean":
+        return groups.select(
+            key[:4] + [pl.col("mean").alias("value"), pl.col("sigma_mean").alias("sigma"), "run"]
+        )
+    shown = []
+    for r in repeated.head(3).iter_rows(named=True):
+        vals = sorted(set(r["values"]))
+        what = (
+            "conflicting values " + ", ".join(f"{v:g}" for v in vals)
+            if len(vals) > 1
+            else (f"value {vals[0]:g}")
+        )
+        shown.append(
+            f"{r['quantity']} at speed_rpm={r['speed_rpm']:g}, axial/preload={r['axial_n']:g} N, "
+            f"radial_n={r['radial_n']:g}, run={r['run']!r}: {r['n']} rows, {what}"
+        )
+    more = f" (and {repeated.height - 3} more)" if repeated.height > 3 else ""
+    raise DataError(
+        f"invalid measurements: {repeated.height} duplicated measurement(s): "
+        f"{'; '.join(shown)}{more}; give each repeat its own run label, remove the copies, "
+        'or load with duplicates="mean" to average them'
+    )
 
 
 def _preload_column(df: Any) -> Any:
@@ -160,7 +311,11 @@ def _read_table(data: Any) -> Any:
     if isinstance(data, (str, Path)):
         p = Path(data)
         try:
-            return pl.read_parquet(p) if p.suffix == ".parquet" else pl.read_csv(p)
+            if p.suffix == ".parquet":
+                return pl.read_parquet(p)
+            # Every column as text: run labels stay as written ("01"), and
+            # numbers are parsed (and refused) by the checks, not guessed.
+            return pl.read_csv(p, infer_schema=False, comment_prefix="#")
         except Exception as e:  # noqa: BLE001  (polars raises several types)
             raise DataError(f"invalid measurements = {p}: cannot read: {e}") from None
     if isinstance(data, pl.DataFrame):
@@ -200,10 +355,7 @@ def _numeric_columns(df: Any) -> Any:
     for c in ("speed_rpm", "axial_n", "radial_n", "value") + (
         ("sigma",) if "sigma" in df.columns else ()
     ):
-        try:
-            x = df[c].cast(pl.Float64, strict=True).to_numpy()
-        except Exception:  # noqa: BLE001
-            raise DataError(f"invalid {c}: not numeric (dtype {df[c].dtype})") from None
+        x = _numbers(df[c], c)
         bad = ~np.isfinite(x)
         if bad.any():
             i = int(np.argmax(bad))
@@ -214,6 +366,27 @@ def _numeric_columns(df: Any) -> Any:
     if (df["axial_n"] < 0).any():
         raise DataError(f"invalid axial_n = {df['axial_n'].min()}: negative")
     return df
+
+
+def _numbers(col: Any, name: str) -> np.ndarray:
+    """A column as floats: numbers, or text that reads as a number;
+    booleans (also written ``true``) and other text are a DataError naming
+    the first such value."""
+    import polars as pl
+
+    if col.dtype == pl.Boolean:
+        raise DataError(f"invalid {name}: booleans are not numbers (dtype Boolean)")
+    if col.dtype == pl.Utf8:
+        col = col.str.strip_chars()
+    try:
+        got = col.cast(pl.Float64, strict=False)
+    except Exception:  # noqa: BLE001  (a dtype polars cannot cast at all)
+        raise DataError(f"invalid {name}: not numeric (dtype {col.dtype})") from None
+    bad = (got.is_null() & col.is_not_null()).to_numpy()
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise DataError(f"invalid {name} = {col[i]!r} in row {i}: not numeric")
+    return got.to_numpy()
 
 
 def _checked_quantities(df: Any, table: dict) -> Any:
@@ -258,7 +431,7 @@ def _with_sigma_and_run(df: Any, table: dict) -> Any:
         if (df["sigma"] <= 0).any():
             raise DataError(f"invalid sigma = {df['sigma'].min()}: must be > 0")
     else:
-        s = typical_sigma(table, df["quantity"].to_list(), df["value"].to_numpy())
+        s = default_sigma(table, df["quantity"].to_list(), df["value"].to_numpy())
         df = df.with_columns(pl.Series("sigma", s))
     if "run" not in df.columns:
         df = df.with_columns(pl.lit("1").alias("run"))
@@ -274,6 +447,34 @@ def typical_sigma(table: dict, quantities: Sequence[str], values: np.ndarray) ->
     return np.where(rel, typ * np.abs(np.asarray(values, dtype=float)), typ)
 
 
+def default_sigma(table: dict, quantities: Sequence[str], values: np.ndarray) -> np.ndarray:
+    """The sigma a value without one gets: its ``typical_sigma``, never
+    below the quantity's ``sigma_floor`` (so always > 0)."""
+    floor = np.array([sigma_floor(table, q) for q in quantities], dtype=float)
+    s = np.maximum(typical_sigma(table, quantities, values), floor)
+    bad = ~(s > 0)
+    if bad.any():
+        q = list(quantities)[int(np.argmax(bad))]
+        raise DataError(
+            f"invalid sigma for {q}: its registry gives no positive typical sigma; "
+            "give a sigma column"
+        )
+    return s
+
+
+def sigma_floor(table: dict, quantity: str) -> float:
+    """The least default sigma of ``quantity`` in its own unit
+    (``SIGMA_FLOOR``; for a relative quantity not listed there, its typical
+    fraction of 1e-3 times the larger end of its plausible range)."""
+    if quantity in SIGMA_FLOOR:
+        return SIGMA_FLOOR[quantity]
+    typ, rel = table[quantity][3], table[quantity][4]
+    if not rel:
+        return float(typ)
+    lo, hi = table[quantity][2]
+    return float(typ) * 1e-3 * max(abs(lo), abs(hi), 1.0)
+
+
 def synthetic_measurements(
     truth: Any,
     conditions: polars.DataFrame,
@@ -282,10 +483,12 @@ def synthetic_measurements(
 ) -> polars.DataFrame:
     """Synthetic "measurements" for testing a diagnosis: ``truth``'s
     prediction of each row of ``conditions`` (operating columns and
-    ``quantity``; ``preload_n`` may stand for ``axial_n``) plus Gaussian
-    noise of ``noise`` times the quantity's typical uncertainty
-    (``typical_sigma`` over ``truth.quantities``), with that sigma as
-    the ``sigma`` column; reproducible by ``seed``."""
+    ``quantity``; ``preload_n`` may stand for ``axial_n``) plus noise of
+    ``noise`` times the quantity's typical uncertainty (``typical_sigma``
+    over ``truth.quantities``), with that sigma as the ``sigma`` column;
+    reproducible by ``seed``. The noise is Gaussian, and log-normal for a
+    quantity whose uncertainty is relative, so that a positive quantity
+    stays positive."""
     import polars as pl
 
     conditions = _current_quantities(conditions)
@@ -296,29 +499,46 @@ def synthetic_measurements(
     q = conditions["quantity"].to_list()
     value = np.array([p[qq][i] for i, qq in enumerate(q)])
     sig = noise * typical_sigma(truth.quantities, q, value)
-    rng = np.random.default_rng(seed)
+    z = np.random.default_rng(seed).normal(size=len(value))
+    relative = np.array([truth.quantities[qq][4] for qq in q], dtype=bool)
     return conditions.with_columns(
-        pl.Series("value", value + rng.normal(size=len(value)) * sig), pl.Series("sigma", sig)
+        pl.Series("value", _noisy_values(value, z, sig, relative)), pl.Series("sigma", sig)
     )
+
+
+def _noisy_values(value: Any, z: Any, sigma: Any, relative: Any) -> Any:
+    """``value`` with ``z`` standard-normal draws of noise of spread
+    ``sigma``: ``value + z sigma``, except where ``relative`` (a quantity
+    whose uncertainty is a fraction of itself: a stiffness, a heat, a
+    vibration velocity, all positive) and the value is positive, where the
+    noise is log-normal, ``value exp(z sigma / value)``: the same to first
+    order in ``sigma / value``, but never negative (additive noise can turn
+    a small vibration velocity negative, which no sensor reads)."""
+    value, sigma = np.asarray(value, dtype=float), np.asarray(sigma, dtype=float)
+    positive = np.asarray(relative, dtype=bool) & (value > 0.0)
+    spread = np.where(positive, sigma / np.where(positive, value, 1.0), 0.0)
+    return np.where(positive, value * np.exp(z * spread), value + z * sigma)
 
 
 def holdout_mask(
     df: polars.DataFrame, holdout: Union[str, float, Sequence[str], None]
 ) -> np.ndarray:
+    from .. import _validate as val
+
     speed = df["speed_rpm"].to_numpy()
-    if holdout is None or holdout == "none":
+    if holdout is None or (isinstance(holdout, str) and holdout == "none"):
         return np.zeros(len(speed), dtype=bool)
-    if isinstance(holdout, bool):
-        raise ConfigError(
-            f"invalid holdout = {holdout}: 'highest_speeds', a fraction of the distinct speeds, "
-            "run label(s) or None"
-        )
+    if not (val.is_number(holdout) or isinstance(holdout, (str, list, tuple, np.ndarray))):
+        raise val.fail(
+            "holdout", holdout, "'highest_speeds', a fraction of the distinct speeds in (0, 1), "
+            "run label(s) or None",
+        )  # fmt: skip
     if isinstance(holdout, str) and holdout == "highest_speeds":
         holdout = 0.25
-    if isinstance(holdout, (float, int)):
-        frac = float(holdout)
+    if val.is_number(holdout):
+        frac = val.real("holdout", holdout)
         if not 0.0 < frac < 1.0:
-            raise ConfigError(f"invalid holdout = {holdout}: a fraction in (0, 1)")
+            raise val.fail("holdout", holdout, "a fraction of the distinct speeds in (0, 1)")
         us = np.unique(speed)
         if len(us) < 3:
             raise DataError(
@@ -327,7 +547,7 @@ def holdout_mask(
             )
         k = min(max(1, int(round(frac * len(us)))), len(us) - 2)
         return speed >= us[-k]
-    runs = [str(r) for r in (holdout if not isinstance(holdout, str) else [holdout])]
+    runs = val.names("holdout", holdout, one=True)  # run labels are text
     have = set(df["run"].to_list())
     for r in runs:
         if r not in have:

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Any, Optional
 
 from .._types import EffectKind
 from ..errors import ConfigError
+from ..thermal.oil_supply import SUPPLY_OPTIONS
 
 if TYPE_CHECKING:
     import polars
@@ -59,6 +60,40 @@ _PARAMETERS = (
 #: Bounds of a per-load-level scale (as the load scales above).
 LOAD_SCALE_BOUNDS = (0.7, 1.3)
 
+# Oil-supply candidates (docs/concepts/physics.md §9, eq. 9.10), offered
+# when the baseline states a jet, oil-air or oil-mist flow; they replace the
+# fixed drag fraction X of ``_PARAMETERS``. Bounds (our assumptions, argued
+# in docs/concepts/diagnosis.md): the flow reaching the cavity 0.2-5 times
+# the stated one -- a rig's flowmeter reads within a few per cent, but the
+# stated flow is often the pump's setting shared by several outlets, and of
+# a jet at DN above 1 million only part passes the air curtain the cage and
+# balls drive (it depends on the jet's position and velocity, which the
+# correlation does not carry); a factor 5 either way is 1.8x the drag at
+# Parker's W^0.37. The
+# speed exponent of the cavity fraction 0.5-1.5 about Parker's 1: a film
+# thrown off at a rate proportional to the speed gives 1, a film thinned
+# by centrifugal drainage against viscosity (Nusselt film, h ~ (nu Q /
+# (omega^2 r))^(1/3)) 2/3; we allow half a unit either way of the published
+# value. The exponent tilts X about 10,000 rpm (eq. 9.10), so it changes
+# the drag's speed slope (about n^(3-e)) and the flow scale its level.
+SUPPLY_PARAMETERS = (
+    # (name/option, unit, lower, upper, null, description)
+    ("oil_flow_scale", "1", 0.2, 5.0, 1.0,
+     "oil flow reaching the cavity differs from the stated supply by a factor: drag ~ W^0.37 n^2"),
+    ("cavity_fraction_speed_exponent", "1", 0.5, 1.5, 1.0,
+     "cavity oil fraction falls with speed faster or slower than Parker's 1/n: drag ~ n^(3-e)"),
+)  # fmt: skip
+
+#: Supply keywords that state a flow (jet, oil-air, oil-mist): with one of
+#: them the drag follows the supply and ``SUPPLY_PARAMETERS`` apply.
+FLOW_KEYWORDS = ("oil_flow_cm3_per_min", "oil_volume_cm3_per_h")
+
+
+def supply_given(options: dict) -> bool:
+    """Whether ``options`` carry an oil-supply keyword (not None)."""
+    return any(options.get(k) is not None for k in SUPPLY_OPTIONS)
+
+
 #: The heat models (docs/concepts/physics.md §9): name -> description.
 HEAT_MODELS = {
     "palmgren": "Palmgren load + viscous moments and spin heat (A-20..A-23): the seeds' model",
@@ -102,6 +137,7 @@ _THERMAL_DEFAULTS: dict[str, Any] = {
     "lubrication": None,
     "sliding_friction_ehl": None,
     "replenishment_krs": None,
+    **SUPPLY_OPTIONS,
 }
 
 #: Options of the bearing spec that are not thermal_state keywords: they

@@ -39,9 +39,13 @@ class _Setting:
             opts[c.option] = c.name.split(":", 1)[1]
         else:
             # a per-level option (load scale of one level) may be new to the
-            # baseline: its null value is the candidate's
-            cur = float(opts.get(c.option, base_options.get(c.option, c.null)))
-            opts[c.option] = cur + value if c.offset else value
+            # baseline, and an unset one (None) takes its default: the
+            # candidate's null value
+            if c.offset:
+                cur = opts.get(c.option, base_options.get(c.option))
+                opts[c.option] = (c.null if cur is None else float(cur)) + value
+            else:
+                opts[c.option] = value
         return _Setting(self.effects, tuple(sorted(opts.items())), self.offsets)
 
 

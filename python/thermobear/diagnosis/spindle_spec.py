@@ -24,8 +24,9 @@ the preload kind (rigid <-> constant-force spring), the spring rate when the
 preload is a spring, the rotor's residual unbalance grade (G0.4-G6.3), a
 preload scale (0.7-1.3, and one per preload level when the data have
 several), the shaft runout a non-contact vibration probe sees (0-50 um),
-the other heat model, and per measured quantity a sensor offset and (for
-absolute-sigma quantities) a sensor gain.
+the other heat model, for a spindle whose oil supply states a flow the
+supply's flow scale and cavity-fraction speed exponent, and per measured
+quantity a sensor offset and (for absolute-sigma quantities) a sensor gain.
 """
 
 from __future__ import annotations
@@ -37,16 +38,19 @@ import numpy as np
 
 from ..errors import ConfigError, ThermobearError
 from ..spindle.spindle import Spindle, _state_row
+from ..thermal.oil_supply import SUPPLY_OPTIONS
 from .candidates import (
     Candidate,
     heat_model_candidates,
     load_level_candidates,
     sensor_gain_candidates,
     sensor_offset_candidates,
+    supply_candidates,
 )
 from .candidates import candidates as _candidate_table
 from .measurements import PRELOAD_REGISTRIES, load_measurements
 from .protocol import ModelSpec, register_kind
+from .registry import supply_given
 from .result import Diagnosis
 from .screening import _GRID
 from .workflow import diagnose
@@ -128,6 +132,7 @@ _OPTIONS = (
     "heat_model",
     "lubrication",
     "churning_oil_fraction",
+    *SUPPLY_OPTIONS,
 )
 #: Options that act only on the vibration quantity (not the thermal state).
 _VIBRATION_ONLY = ("unbalance_grade", "runout_um")
@@ -143,7 +148,13 @@ class SpindleModelSpec(ModelSpec):
     ``preload_scale`` (the stated preload times this; per level
     ``preload_scale@<N>``), ``runout_um`` (shaft runout seen by the
     vibration probe, default 0), ``heat_model``, ``lubrication``,
-    ``churning_oil_fraction`` (docs/concepts/physics.md §9).
+    ``churning_oil_fraction`` and the oil-supply keywords such as
+    ``oil_volume_cm3_per_h``, ``oil_flow_scale`` (docs/concepts/physics.md
+    §9). The spindle's own oil supply is the default: its drag follows the
+    supply as in [`Spindle.thermal_state`][thermobear.Spindle.thermal_state];
+    a lubrication method or a fixed ``churning_oil_fraction`` given without
+    supply keywords replaces it, as in
+    [`Spindle.with_options`][thermobear.Spindle.with_options].
     Each configuration, preload and speed is solved once (cached, shared by
     the copies of [`with_setting`][thermobear.SpindleModelSpec.with_setting])."""
 
@@ -173,9 +184,9 @@ class SpindleModelSpec(ModelSpec):
             "runout_um": 0.0,
             "heat_model": str(spindle.assumptions.get("heat_model", "palmgren")),
             "lubrication": None,
-            "churning_oil_fraction": float(spindle.assumptions.get("churning_oil_fraction", 0.0)),
+            **_own_drag(spindle),
         }
-        self.options = {**defaults, **options}
+        self.options = _merged_options(defaults, options)
         _check_options(self.options)
         self._cache: dict = {}
 
@@ -209,7 +220,7 @@ class SpindleModelSpec(ModelSpec):
         new._known = self._known
         new.effects = new._expand(list(self.effects) + list(add_effects))
         _check_option_names(options)
-        new.options = {**self.options, **options}
+        new.options = _merged_options(self.options, options)
         _check_options(new.options)
         new._cache = self._cache
         return new
@@ -254,18 +265,22 @@ class SpindleModelSpec(ModelSpec):
     def configured(self, preload_n: float) -> Spindle:
         """The [`Spindle`][thermobear.Spindle] of this configuration at a
         stated preload (scaled by
-        [`effective_preload_n`][thermobear.SpindleModelSpec.effective_preload_n])."""
+        [`effective_preload_n`][thermobear.SpindleModelSpec.effective_preload_n]);
+        the drag settings not set (None) stay the spindle's own."""
         o = self.options
-        spring = o["preload_kind"] == "spring"
+        # the spindle's own spring rate is kept as stored (N/um -> N/m is not
+        # exact to the last bit); another one is set
+        rate = o["spring_rate_n_per_um"]
+        spring = o["preload_kind"] == "spring" and rate != self.spindle.spring_rate_n_per_um
+        drag = ("lubrication", "churning_oil_fraction", *SUPPLY_OPTIONS)
         return self.spindle.with_options(
             preload_n=self.effective_preload_n(preload_n),
             preload_kind=o["preload_kind"],
-            spring_rate_n_per_um=float(o["spring_rate_n_per_um"]) if spring else None,
+            spring_rate_n_per_um=float(rate) if spring else None,
             effects=list(self.effects),
             spin_friction_coefficient=float(o["spin_friction_coefficient"]),
             heat_model=str(o["heat_model"]),
-            lubrication=o["lubrication"],
-            churning_oil_fraction=float(o["churning_oil_fraction"]),
+            **{k: o[k] for k in drag if o[k] is not None},
         )
 
     def _state(self, preload_n: float, speed_rpm: float) -> dict:
@@ -408,6 +423,33 @@ def _default_spin_friction(spindle: Spindle) -> float:
     raise ConfigError(f"invalid spindle = {spindle!r}: no spin friction coefficient in assumptions")
 
 
+def _own_drag(spindle: Spindle) -> dict:
+    """The spindle's drag settings as spec options: its oil supply as the
+    supply keywords that give it back (None where not stated), or, without
+    a supply, its fixed cavity oil fraction."""
+    a = spindle.assumptions
+    own = {k: a.get(k) for k in SUPPLY_OPTIONS}
+    fixed = None if supply_given(own) else float(a.get("churning_oil_fraction", 0.0))
+    return {"churning_oil_fraction": fixed, **own}
+
+
+def _merged_options(base: dict, options: dict) -> dict:
+    """``base`` with ``options`` replaced, the drag kept to one source as
+    [`Spindle.with_options`][thermobear.Spindle.with_options] does: supply
+    keywords given leave the fixed fraction unset; a lubrication method
+    or a fixed fraction given without them drops the base's supply (the
+    method's drag, or the fixed fraction)."""
+    out = {**base, **options}
+    if supply_given(options):
+        if "churning_oil_fraction" not in options:
+            out["churning_oil_fraction"] = None
+    elif any(options.get(k) is not None for k in ("lubrication", "churning_oil_fraction")):
+        out.update(dict.fromkeys(SUPPLY_OPTIONS))
+        if "churning_oil_fraction" not in options:  # the method's own fraction
+            out["churning_oil_fraction"] = None
+    return out
+
+
 def _check_option_names(options: dict) -> None:
     from .registry import current_option_names
 
@@ -433,6 +475,12 @@ def _check_options(o: dict) -> None:
     e = o["runout_um"]
     if not (np.isfinite(e) and e >= 0):
         raise ConfigError(f"invalid runout_um = {e!r}: a runout >= 0 um")
+    x = o["churning_oil_fraction"]
+    if x is not None and supply_given(o):
+        raise ConfigError(
+            f"invalid churning_oil_fraction = {x!r}: a fixed cavity oil fraction overrides "
+            "the oil supply given; give one or the other"
+        )
 
 
 # --------------------------------------------------------------------------
@@ -456,6 +504,7 @@ def _spindle_candidate_list(
     out += _unbalance_candidates(opts)
     out += _preload_scale_and_runout_candidates(opts, allq)
     out += heat_model_candidates(opts, allq, skf_inputs=False)
+    out += supply_candidates(opts, allq)
     out += sensor_offset_candidates(quantities, SPINDLE_QUANTITIES)
     out += sensor_gain_candidates(quantities, SPINDLE_QUANTITIES)
     return out
@@ -659,8 +708,6 @@ def diagnose_spindle(
 def seed_b_measurements() -> polars.DataFrame:
     """Seed B's reported measurements (configs/seed_b_measurements.csv; the
     sources are in the file) as a checked tidy table."""
-    import polars as pl
-
     path = resources.files("thermobear.configs").joinpath("seed_b_measurements.csv")
     with resources.as_file(path) as p:
-        return load_measurements(pl.read_csv(p, comment_prefix="#"), SPINDLE_QUANTITIES)
+        return load_measurements(p, SPINDLE_QUANTITIES)

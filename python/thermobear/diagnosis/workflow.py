@@ -58,10 +58,11 @@ model run.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
+from typing import TYPE_CHECKING, Any, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
+from .. import _validate as val
 from .acceptance import accepted_record, joint_refit, select
 from .audit import audit
 from .calibrated import diagnosis_model
@@ -177,9 +178,11 @@ def diagnose(
     candidate with the generic smooth control (``thermobear.diagnosis.control``). See the
     module docstring for the statistics; returns a [`Diagnosis`][thermobear.Diagnosis]."""
     model = as_spec(model)
-    rules = _Rules(
+    rules = _checked_rules(
         max_rounds, delta_bic_min, tie_delta_bic, lookalike_cosine, suggest, envelope, control
     )
+    candidates = val.optional_names("candidates", candidates, one=True)
+    outliers = val.flag("outliers", outliers)
     full = prepare_measurements(measured, model.quantities, holdout)
     # with no names given, data at two or more load levels also screen one
     # load-scale candidate per level (a load cell or preload off at one level)
@@ -205,6 +208,43 @@ def diagnose(
     else:
         s = _search(model, full.subset(keep), pool, outside, rules)
     return _conclude(s, full, keep, z, pred0, baseline_audit)
+
+
+def _checked_rules(
+    max_rounds: Any,
+    delta_bic_min: Any,
+    tie_delta_bic: Any,
+    lookalike_cosine: Any,
+    suggest: Any,
+    envelope: Any,
+    control: Any,
+) -> _Rules:
+    """The decision rules of [`diagnose`][thermobear.diagnose], each argument checked."""
+    return _Rules(
+        val.whole("max_rounds", max_rounds, 0),
+        val.real("delta_bic_min", delta_bic_min, 0.0),
+        val.real("tie_delta_bic", tie_delta_bic, 0.0),
+        val.real("lookalike_cosine", lookalike_cosine, 0.0, 1.0),
+        val.flag("suggest", suggest),
+        _checked_envelope(envelope),
+        val.flag("control", control),
+    )
+
+
+def _checked_envelope(envelope: Any) -> Optional[dict]:
+    """``envelope`` checked: None, or a dict of ``speed_rpm`` -> (low, high)
+    and load columns -> their values (finite, >= 0)."""
+    if envelope is None:
+        return None
+    if not isinstance(envelope, Mapping):
+        raise val.fail("envelope", envelope, "None or a dict name -> (low, high)")
+    out: dict[str, Any] = {}
+    for k, v in envelope.items():
+        name = f"envelope[{k!r}]"
+        out[val.text("envelope key", k)] = (
+            val.pair(name, v, 0.0) if k == "speed_rpm" else tuple(val.reals(name, v, 0.0))
+        )
+    return out
 
 
 def _search(

@@ -10,6 +10,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .. import _native
+from .. import _validate as val
 from .._deprecation import renamed_kwargs
 from .._types import Direction, LyapunovMethod, LyapunovPer
 from .pair import _config_error
@@ -76,12 +77,7 @@ def _speeds(speeds_rpm: ArrayLike) -> np.ndarray:
 
 
 def _count(name: str, value: Any, minimum: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
-        if not (isinstance(value, float) and value.is_integer()):
-            raise _config_error(f"invalid {name} = {value!r}: must be a whole number")
-    if int(value) < minimum:
-        raise _config_error(f"invalid {name} = {value!r}: must be at least {minimum}")
-    return int(value)
+    return val.whole(name, value, minimum)
 
 
 def _counts(transient: Any, record: Any, steps: Any, lyapunov: Any) -> tuple[int, int, int, int]:
@@ -462,13 +458,16 @@ def regimes(pts: Any, *, max_period: int = 32, period_rel_tol: float = 1e-3) -> 
     frame's DTE range, else ``non-periodic``."""
     import polars as pl
 
+    if not isinstance(pts, pl.DataFrame):
+        raise val.fail("pts", pts, "a polars DataFrame (a sweep of bifurcation)")
     if "speed_rpm" not in pts.columns:
         raise _config_error("invalid pts = frame without 'speed_rpm'")
-    keys = [k for k in ("case", "direction") if k in pts.columns]
+    keys: list[str] = [k for k in ("case", "direction") if k in pts.columns]
     max_period = _count("max_period", max_period, 1)
-    if not 0.0 < float(period_rel_tol) < 1.0:
+    tol = val.real("period_rel_tol", period_rel_tol, 0.0, 1.0, open_lo=True)
+    if tol == 1.0:
         raise _config_error(f"invalid period_rel_tol = {period_rel_tol!r}: must lie in (0, 1)")
-    per = _per_speed(pts, keys, float(period_rel_tol), max_period)
+    per = _per_speed(pts, keys, tol, max_period)
     out = []
     groups = per.group_by(keys, maintain_order=True) if keys else [((), per)]
     for key, g in groups:
@@ -520,8 +519,8 @@ def regime_map(
     as in [`bifurcation`][thermobear.bifurcation] (the jump settings are not used here)."""
 
     _check_system(system)
-    torques = [float(t) for t in np.asarray(torques_n_m, dtype=float).ravel()]
-    scales = [float(e) for e in np.asarray(te_scales, dtype=float).ravel()]
+    torques = val.reals("torques_n_m", torques_n_m).tolist()
+    scales = val.reals("te_scales", te_scales).tolist()
     speeds = _speeds(speeds_rpm)
     steps = sweep_steps([system], speeds, steps_per_period)
     settings = _settings(locals())
@@ -639,7 +638,7 @@ def largest_lyapunov(
         raise _config_error(f"invalid per = {per!r}: must be 's' or 'mesh_period'")
     d = _native.largest_lyapunov_gear(
         system_or_name._s,
-        float(speed_rpm),
+        val.real("speed_rpm", speed_rpm, 0.0, open_lo=True),
         _count("periods", periods, 2),
         _count("transient_periods", transient_periods, 0),
         _count("steps_per_period", steps_per_period, 1),

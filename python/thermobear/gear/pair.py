@@ -9,6 +9,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .. import _native
+from .. import _validate as val
 from .._deprecation import renamed_kwargs
 from .._types import MeshModel
 
@@ -18,6 +19,10 @@ if TYPE_CHECKING:
 #: Speeds at which the "speed" and "thermal" bearing stiffness is solved
 #: (linear interpolation in between, constant beyond the ends) [rpm].
 STIFFNESS_SPEEDS_RPM = np.arange(1000.0, 20000.0 + 1.0, 250.0)
+
+#: The most points of a mesh-stiffness curve (a million per mesh period is
+#: already far finer than any tooth profile).
+MAX_MESH_POINTS = 1_000_000
 
 
 def _config_error(msg: str) -> Exception:
@@ -66,21 +71,21 @@ class GearPair:
     ) -> "GearPair":
         return cls(
             _native.GearPair.from_table(
-                int(pinion_teeth),
-                int(gear_teeth),
-                float(normal_module_mm),
-                float(normal_pressure_angle_deg),
-                float(helix_angle_deg),
-                float(face_width_mm),
-                float(youngs_modulus_mpa),
-                float(poisson_ratio),
-                float(density_t_per_mm3),
-                (float(np.ravel(mass_kg)[0]), float(np.ravel(mass_kg)[1])),
-                (float(np.ravel(polar_inertia_t_mm2)[0]), float(np.ravel(polar_inertia_t_mm2)[1])),
-                float(input_torque_n_m),
-                (float(np.ravel(profile_shift_coeff)[0]), float(np.ravel(profile_shift_coeff)[1])),
-                float(addendum_coeff),
-                float(dedendum_coeff),
+                val.whole("pinion_teeth", pinion_teeth, 1),
+                val.whole("gear_teeth", gear_teeth, 1),
+                val.real("normal_module_mm", normal_module_mm, 0.0, open_lo=True),
+                val.real("normal_pressure_angle_deg", normal_pressure_angle_deg, 0.0, 90.0),
+                val.real("helix_angle_deg", helix_angle_deg, -90.0, 90.0),
+                val.real("face_width_mm", face_width_mm, 0.0, open_lo=True),
+                val.real("youngs_modulus_mpa", youngs_modulus_mpa, 0.0, open_lo=True),
+                val.real("poisson_ratio", poisson_ratio, -1.0, 0.5),
+                val.real("density_t_per_mm3", density_t_per_mm3, 0.0, open_lo=True),
+                val.pair("mass_kg", mass_kg),  # signs: the native check names the gear
+                val.pair("polar_inertia_t_mm2", polar_inertia_t_mm2),
+                val.real("input_torque_n_m", input_torque_n_m),
+                val.pair("profile_shift_coeff", profile_shift_coeff),
+                val.real("addendum_coeff", addendum_coeff, 0.0),
+                val.real("dedendum_coeff", dedendum_coeff, 0.0),
             )
         )
 
@@ -116,7 +121,23 @@ class GearPair:
         the normal deflection of A-45, what the dynamics use)."""
         import polars as pl
 
-        cols = self._g.mesh_stiffness(int(points), model)
+        n = val.whole("points", points, 2, MAX_MESH_POINTS)
+        cols = self._g.mesh_stiffness(n, val.text("model", model))
+        return pl.DataFrame({k: np.asarray(v) for k, v in cols.items()})
+
+    def tooth_pair_stiffness(
+        self, points: int = 256, model: MeshModel = "potential-energy"
+    ) -> polars.DataFrame:
+        """One tooth pair's stiffness over its whole engagement, as its
+        contact enters the path of contact (approach), crosses the pitch point
+        and leaves (recess): ``mesh_cycles`` (roll from entering, in mesh
+        periods; the engagement lasts eps_alpha + eps_beta of them),
+        ``transverse_stiffness_n_per_m`` and ``normal_stiffness_n_per_m``.
+        Shifted by whole mesh periods and summed over the pairs in mesh it
+        gives [`mesh_stiffness`][thermobear.GearPair.mesh_stiffness]."""
+        import polars as pl
+
+        cols = self._g.tooth_pair_stiffness(int(points), model)
         return pl.DataFrame({k: np.asarray(v) for k, v in cols.items()})
 
     @property
@@ -142,7 +163,8 @@ class GearPair:
         )
 
     def mesh_frequency_hz(self, speed_rpm: float) -> float:
-        return float(self._g.mesh_frequency_hz(float(speed_rpm)))
+        f = float(self._g.mesh_frequency_hz(val.real("speed_rpm", speed_rpm, 0.0)))
+        return val.finite_result(f, {"speed_rpm": speed_rpm})
 
     def __repr__(self) -> str:
         return repr(self._g)

@@ -10,6 +10,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .. import _native
+from .. import _validate as val
 from .._deprecation import renamed_kwargs
 from .._types import BearingStiffnessPer, MeshDamping, StiffnessMode
 from .pair import STIFFNESS_SPEEDS_RPM, GearPair, _config_error
@@ -102,7 +103,9 @@ class GearSystem:
             raise _config_error(f"invalid gear = {gear!r}: must be a thermobear.GearPair")
         half_um = backlash_half_um(half_backlash_um, backlash_total_um, backlash_um, 50.0)
         bearing = Bearing.preset("6208") if bearings is None else bearings
-        torque = float(gear.geometry["input_torque_n_m"] if torque_n_m is None else torque_n_m)
+        torque = val.real(
+            "torque_n_m", gear.geometry["input_torque_n_m"] if torque_n_m is None else torque_n_m
+        )
         fa, fr = _native.seed_gear_bearing_loads(torque)
         if calibrated:  # the calibrated load scales act on the seed loads
             fa = scaled_load(calibrated, "axial_load_scale", fa)
@@ -111,7 +114,7 @@ class GearSystem:
             bearing, stiffness, bearing_stiffness_per, bearings_per_shaft, stiffness_speeds_rpm,
             (fa, fr), calibrated,
         )  # fmt: skip
-        points = int(table_points)
+        points = val.whole("table_points", table_points, 2)
         self.gear = gear
         self.bearing = bearing
         self.bearings_per_shaft = (
@@ -125,13 +128,13 @@ class GearSystem:
             [float(v) for v in kr],
             [float(v) for v in ka],
             half_backlash_um=half_um,
-            mesh_damping_ratio=float(mesh_damping_ratio),
-            mesh_damping=mesh_damping,
-            bearing_damping_ratio=float(bearing_damping_ratio),
-            te_amplitude_um=None if te_amplitude_um is None else float(te_amplitude_um),
+            mesh_damping_ratio=val.real("mesh_damping_ratio", mesh_damping_ratio, 0.0),
+            mesh_damping=val.choice("mesh_damping", mesh_damping, ("in-contact", "always")),
+            bearing_damping_ratio=val.real("bearing_damping_ratio", bearing_damping_ratio, 0.0),
+            te_amplitude_um=val.optional_real("te_amplitude_um", te_amplitude_um),
             torque_nm=torque,
             table_points=points,
-            mesh_model=mesh_model,
+            mesh_model=None if mesh_model is None else val.text("mesh_model", mesh_model),
             mesh_stiffness_n_per_m=self._stiffness_table(gear, mesh_stiffness_n_per_m, points),
             transmission_error_m=self._te_table(gear, transmission_error_um, points),
         )
@@ -230,12 +233,12 @@ class GearSystem:
 
     def bearing_stiffness_at(self, speed_rpm: float) -> tuple[float, float]:
         """Support (radial, axial) stiffness [N/m] at a speed."""
-        return tuple(self._s.bearing_stiffness_at(float(speed_rpm)))  # type: ignore[return-value]
+        return tuple(self._s.bearing_stiffness_at(val.real("speed_rpm", speed_rpm, 0.0)))  # type: ignore[return-value]
 
     def mass_matrix_kg(self, speed_rpm: float = 10_000.0) -> np.ndarray:
         """Diagonal mass matrix of q = [x_p, y_p, z_p, x_g, y_g, z_g, u]
         (u = R_p theta_p - R_g theta_g, equivalent mass)."""
-        return np.diag(self._s.mass_diagonal_kg(float(speed_rpm)))
+        return np.diag(self._s.mass_diagonal_kg(val.real("speed_rpm", speed_rpm, 0.0)))
 
     def stiffness_matrix_n_per_m(
         self, speed_rpm: float = 10_000.0, mesh_stiffness_n_per_m: Optional[float] = None
@@ -246,7 +249,8 @@ class GearSystem:
             if mesh_stiffness_n_per_m is None
             else mesh_stiffness_n_per_m
         )
-        return np.asarray(self._s.stiffness_matrix(float(speed_rpm), float(k)))
+        k = val.real("mesh_stiffness_n_per_m", k, 0.0, open_lo=True)
+        return np.asarray(self._s.stiffness_matrix(val.real("speed_rpm", speed_rpm, 0.0), k))
 
     def natural_frequencies_hz(
         self, speed_rpm: float = 10_000.0, mesh_stiffness_n_per_m: Optional[float] = None
@@ -257,12 +261,14 @@ class GearSystem:
             if mesh_stiffness_n_per_m is None
             else mesh_stiffness_n_per_m
         )
-        return np.asarray(self._s.natural_frequencies_hz(float(speed_rpm), float(k)))
+        k = val.real("mesh_stiffness_n_per_m", k, 0.0, open_lo=True)
+        n = val.real("speed_rpm", speed_rpm, 0.0)
+        return np.asarray(self._s.natural_frequencies_hz(n, k))
 
     def static_state_m(self, speed_rpm: float = 10_000.0) -> np.ndarray:
         """Static equilibrium q = [x_p, y_p, z_p, x_g, y_g, z_g, u] (in m) in
         contact at the mean mesh stiffness and TE (back flank for coast)."""
-        return np.asarray(self._s.static_state_m(float(speed_rpm)))
+        return np.asarray(self._s.static_state_m(val.real("speed_rpm", speed_rpm, 0.0)))
 
     def projection(self) -> np.ndarray:
         """Mesh-normal projection vector a of q (A-45)."""
@@ -285,11 +291,13 @@ class GearSystem:
 
     def mesh_period_s(self, speed_rpm: float) -> float:
         """Mesh period 60 / (z_p n) [s]."""
-        return float(self._s.mesh_period_s(float(speed_rpm)))
+        t = float(self._s.mesh_period_s(val.real("speed_rpm", speed_rpm, 0.0, open_lo=True)))
+        return val.finite_result(t, {"speed_rpm": speed_rpm})
 
     def check_steps(self, speed_rpm: float, steps_per_period: int) -> None:
         """ConfigError if the RK4 step is too coarse at this speed."""
-        self._s.check_steps(float(speed_rpm), int(steps_per_period))
+        n = val.real("speed_rpm", speed_rpm, 0.0, open_lo=True)
+        self._s.check_steps(n, val.whole("steps_per_period", steps_per_period, 1))
 
     def __repr__(self) -> str:
         p = self.params

@@ -1,5 +1,5 @@
-"""The Axes a figure draws into: the given one, or a new figure's (the Agg
-backend when there is no display)."""
+"""The Axes a figure draws into: the given one, or a new figure's, made in
+the package's style (the Agg backend when there is no display)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,12 @@ if TYPE_CHECKING:
 
 
 def get_axes(ax: Axes | None, polar: bool = False) -> Axes:
+    """``ax`` (its figure gets the style's layout when it has none: see
+    ``thermobear.plot.style.fit_layout``), or a new figure's Axes."""
     if ax is not None:
+        from .style import fit_layout
+
+        fit_layout(ax.figure)
         return ax
     import matplotlib
 
@@ -18,8 +23,11 @@ def get_axes(ax: Axes | None, polar: bool = False) -> Axes:
         matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig = plt.figure(figsize=(6.4, 4.2))
-    return fig.add_subplot(111, projection="polar" if polar else None)
+    from .style import style_context
+
+    with style_context():  # size, fonts and layout of the package's style
+        fig = plt.figure()
+        return fig.add_subplot(111, projection="polar" if polar else None)
 
 
 def _has_display() -> bool:

@@ -6,14 +6,15 @@ probability of each gear regime against speed. Every function takes
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
 
 from ..errors import ConfigError
-from ..glossary import UNIT_SUFFIXES
 from .axes import get_axes
-from .gear import regime_color, regime_order
+from .gear import layer_example, regime_color, regime_layer, regime_order
+from .labels import axis_label
+from .style import artist_kwargs, place_legend, styled
 
 if TYPE_CHECKING:
     import polars
@@ -38,17 +39,11 @@ def shown_unit(unit: str) -> tuple[float, str]:
 
 
 def quantity_label(quantity: str, unit: str) -> str:
-    """An axis label: the quantity's name without its unit suffix, and the
-    unit shown, e.g. "outer ring temperature [°C]" ("k_xx [N/µm]" for an
-    entry of the stiffness matrix)."""
-    name = quantity
-    for s in sorted(UNIT_SUFFIXES, key=len, reverse=True):
-        if name.endswith(s) and len(name) > len(s):
-            name = name[: -len(s)]
-            break
+    """An axis label: the quantity in words and the unit shown, e.g.
+    "outer ring temperature [°C]" ("radial stiffness $k_{xx}$ [N/µm]" for
+    an entry of the stiffness matrix)."""
     _, shown = shown_unit(unit)
-    text = name if name.startswith("k_") and name.count("_") == 1 else name.replace("_", " ")
-    return text + (f" [{shown}]" if shown else "")
+    return axis_label(quantity, shown)
 
 
 def _quantity_rows(pred: polars.DataFrame, quantity: str) -> polars.DataFrame:
@@ -110,11 +105,13 @@ def _draw_measured(
                     label="measured (± sigma)")  # fmt: skip
 
 
+@styled
 def prediction_band(
     pred: polars.DataFrame,
     quantity: str,
     measured: Optional[polars.DataFrame] = None,
     ax: Axes | None = None,
+    **kwargs: Any,
 ) -> Axes:
     """One predicted ``quantity`` against speed with its band.
 
@@ -129,7 +126,7 @@ def prediction_band(
     points of ``quantity`` with error bars of one sigma, and the range of
     its speeds shaded grey, so that what lies outside is seen to be
     extrapolated. The axis shows the unit of the frame's ``unit`` column (a
-    stiffness in N/µm)."""
+    stiffness in N/µm). ``kwargs`` go to the value lines (``Axes.plot``)."""
     import polars as pl
 
     ax = get_axes(ax)
@@ -155,14 +152,14 @@ def prediction_band(
     for i, m in enumerate(members):
         own = rows.filter(pl.col("member") == m)
         color = f"C{i + 1}" if several else "tab:blue"
-        ax.plot(own["speed_rpm"].to_numpy(), own["value"].to_numpy() * k, "-", color=color,
-                lw=1.6, zorder=3, label=m if several else "prediction")  # fmt: skip
+        line = {"color": color, "lw": 1.6, "zorder": 3, "label": m if several else "prediction"}
+        ax.plot(own["speed_rpm"].to_numpy(), own["value"].to_numpy() * k,
+                **artist_kwargs(line, kwargs))  # fmt: skip
     if measured is not None:
         _draw_measured(ax, measured, rows, quantity, k)
-    ax.set_xlabel("speed [rpm]")
+    ax.set_xlabel(axis_label("speed_rpm"))
     ax.set_ylabel(quantity_label(quantity, unit))
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8)
+    place_legend(ax)
     return ax
 
 
@@ -198,24 +195,19 @@ def _regime_grid(
     return speeds, regimes, grid
 
 
-#: The layer of every period of 3 or more (as in ``regime_map``).
-HIGHER_PERIODS = "period-n (n ≥ 3)"
-
-
 def _grouped(regime: str) -> str:
-    """A regime's layer: its own for period-1, period-2 and the
-    non-periodic regimes, one layer for all higher periods."""
-    kind, period, _ = regime_order(regime)
-    return HIGHER_PERIODS if kind == 0 and period >= 3 else regime
+    """A regime's layer (``thermobear.plot.gear.regime_layer``)."""
+    return regime_layer(regime)
 
 
 def _example(layer: str) -> str:
     """A regime of a layer (for its order and colour)."""
-    return "period-3" if layer == HIGHER_PERIODS else layer
+    return layer_example(layer)
 
 
+@styled
 def regime_probability(
-    pred: polars.DataFrame, ax: Axes | None = None, *, member: Optional[str] = None
+    pred: polars.DataFrame, ax: Axes | None = None, *, member: Optional[str] = None, **kwargs: Any
 ) -> Axes:
     """The probability of each gear regime against speed, stacked (the
     stack reaches 1 at every speed), from the regime prediction of
@@ -226,15 +218,16 @@ def regime_probability(
     several members (explanations) the figure shows their equal-weight
     mixture, or the one named by ``member``. As in
     [`regime_map`][thermobear.plot.regime_map], the periods of 3 or more
-    share one layer, "period-n (n ≥ 3)", and the colours are the same."""
+    share one layer, "period-n (n ≥ 3)", and the colours are the same.
+    ``kwargs`` go to the stack (``Axes.stackplot``)."""
     ax = get_axes(ax)
     speeds, regimes, grid = _regime_grid(pred, member)
     colors = [regime_color(_example(r)) for r in regimes]
-    ax.stackplot(speeds, grid, labels=regimes, colors=colors, alpha=0.85, lw=0, step="mid")
+    stack = {"labels": regimes, "colors": colors, "alpha": 0.85, "lw": 0, "step": "mid"}
+    ax.stackplot(speeds, grid, **artist_kwargs(stack, kwargs))
     ax.set_xlim(speeds.min(), speeds.max() if speeds.max() > speeds.min() else speeds.min() + 1)
     ax.set_ylim(0.0, 1.0)
-    ax.set_xlabel("speed [rpm]")
+    ax.set_xlabel(axis_label("speed_rpm"))
     ax.set_ylabel("probability of the regime")
-    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
-    ax.grid(True, alpha=0.3)
+    place_legend(ax)
     return ax

@@ -6,6 +6,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 from .axes import get_axes
+from .labels import axis_label, human_name
+from .style import artist_kwargs, place_legend, styled
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -13,6 +15,7 @@ if TYPE_CHECKING:
 __all__ = ["heat_vs_speed", "node_temperatures", "thermal_deformations"]
 
 
+@styled
 def heat_vs_speed(
     frames: Sequence[Any],
     labels: Sequence[str],
@@ -20,16 +23,18 @@ def heat_vs_speed(
     *,
     column: str = "heat_w",
     x: str = "speed_rpm",
+    **kwargs: Any,
 ) -> Axes:
     """Bearing heat [W] against speed for several cases (e.g. preloads),
-    from [`thermobear.stiffness_curve`][thermobear.stiffness_curve] with ``mode="thermal"``."""
+    from [`thermobear.stiffness_curve`][thermobear.stiffness_curve] with ``mode="thermal"``;
+    ``kwargs`` go to every line (``Axes.plot``)."""
     ax = get_axes(ax)
     for df, lab in zip(frames, labels, strict=False):
-        ax.plot(df[x].to_numpy(), df[column].to_numpy(), "o-", ms=3, label=lab)
-    ax.set_xlabel("speed [rpm]" if x == "speed_rpm" else x)
-    ax.set_ylabel("heat [W]")
-    ax.grid(True, alpha=0.3)
-    ax.legend()
+        style = {"marker": "o", "ms": 3, "label": lab}
+        ax.plot(df[x].to_numpy(), df[column].to_numpy(), **artist_kwargs(style, kwargs))
+    ax.set_xlabel(axis_label(x))
+    ax.set_ylabel(axis_label(column))
+    place_legend(ax)
     return ax
 
 
@@ -42,39 +47,50 @@ _NODES = (
 )
 
 
+@styled
 def node_temperatures(
-    df: Any, ax: Axes | None = None, *, x: str = "speed_rpm", xlabel: Optional[str] = None
+    df: Any,
+    ax: Axes | None = None,
+    *,
+    x: str = "speed_rpm",
+    xlabel: Optional[str] = None,
+    **kwargs: Any,
 ) -> Axes:
-    """Node temperatures [C] against ``x`` (speed or a load column)."""
+    """Node temperatures [°C] against ``x`` (speed or a load column);
+    ``kwargs`` go to every line (``Axes.plot``)."""
     ax = get_axes(ax)
     xs = df[x].to_numpy()
     for col, lab in _NODES:
         if col in df.columns:
-            ax.plot(xs, df[col].to_numpy(), "o-", ms=3, label=lab)
-    ax.set_xlabel(xlabel or ("speed [rpm]" if x == "speed_rpm" else x))
+            style = {"marker": "o", "ms": 3, "label": lab}
+            ax.plot(xs, df[col].to_numpy(), **artist_kwargs(style, kwargs))
+    ax.set_xlabel(xlabel or axis_label(x))
     ax.set_ylabel("temperature [°C]")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small")
+    place_legend(ax)
     return ax
 
 
-def thermal_deformations(df: Any, ax: Axes | None = None) -> Axes:
+@styled
+def thermal_deformations(df: Any, ax: Axes | None = None, **kwargs: Any) -> Axes:
     """Radial and axial thermal offsets of the groove centres (A-38, ball
     growth included), the ball growth and the centrifugal ring expansion
-    [um] against speed."""
+    [µm] against speed; ``kwargs`` go to every line (``Axes.plot``)."""
     ax = get_axes(ax)
     s = df["speed_rpm"].to_numpy()
-    for col, style, lab in (
-        ("radial_thermal_offset_um", "-", "radial thermal offset u_Tr"),
-        ("axial_thermal_offset_um", "--", "axial thermal offset u_Ta"),
-        ("ball_growth_um", ":", "ball diameter growth"),
-        ("centrifugal_expansion_um", "-.", "centrifugal ring expansion"),
+    for col, style in (
+        ("radial_thermal_offset_um", "-"),
+        ("axial_thermal_offset_um", "--"),
+        ("ball_growth_um", ":"),
+        ("centrifugal_expansion_um", "-."),
     ):
         if col in df.columns:
-            ax.plot(s, df[col].to_numpy(), style, label=lab)
+            ax.plot(
+                s,
+                df[col].to_numpy(),
+                **artist_kwargs({"ls": style, "label": human_name(col)}, kwargs),
+            )
     ax.axhline(0.0, color="k", lw=0.5)
-    ax.set_xlabel("speed [rpm]")
+    ax.set_xlabel(axis_label("speed_rpm"))
     ax.set_ylabel("displacement [µm]")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small")
+    place_legend(ax)
     return ax

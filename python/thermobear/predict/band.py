@@ -154,30 +154,44 @@ def predict(
 
     cm = as_calibrated(model)
     lv = check_level(level)
-    check_arguments(method, samples, engine)
+    samples, seed = check_arguments(method, samples, engine, what, seed)
     if what == "regimes":
         run = (gear, gear_options, direction, sweep_options, engine)
-        return predict_regimes(cm, conditions, lv, method, int(samples), int(seed), *run)
+        return predict_regimes(cm, conditions, lv, method, samples, seed, *run)
     measured = measured_conditions(cm)
     cond = condition_frame(cm.spec, conditions, measured if measured is not None else (
         measured_conditions(model)))  # fmt: skip
     quantities = quantities_for(cm.spec, what)
     used = ("delta" if what in SMOOTH_WHATS else "sampling") if method == "auto" else method
     members = tuple(getattr(cm, "members", ()) or ())
-    opts = (lv, used, int(samples), int(seed))
+    opts = (lv, used, samples, seed)
     if not members:
         return band_frame(cm, "", cond, quantities, *opts, engine=engine)
     frames = [band_frame(m, str(m.label), cond, quantities, *opts, engine=engine) for m in members]
     return pl.concat(frames + [envelope(frames, condition_columns(cm.spec))])
 
 
-def check_arguments(method: Any, samples: Any, engine: Any) -> None:
-    """Refuse an unknown ``method``, ``samples`` below 8, a bad ``engine``."""
-    if method not in _METHODS:
+#: The most samples a sampled band takes (each is a model run).
+MAX_SAMPLES = 2**20
+
+
+def check_arguments(
+    method: Any, samples: Any, engine: Any, what: Any = "measured", seed: Any = 0
+) -> tuple[int, int]:
+    """Refuse an unknown ``method``, ``samples`` outside [8, ``MAX_SAMPLES``],
+    a bad ``engine``, a ``what`` that is not a string, a ``seed`` that is
+    not a whole number >= 0; returns ``(samples, seed)``."""
+    from .. import _validate as val
+
+    if not isinstance(what, str):
+        raise ConfigError(f"invalid what = {what!r}: a string (see the docs of predict)")
+    if not isinstance(method, str) or method not in _METHODS:
         raise ConfigError(f"invalid method = {method!r}: one of {', '.join(_METHODS)}")
-    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 8:
+    if isinstance(samples, float):  # a count is written as an integer here
         raise ConfigError(f"invalid samples = {samples!r}: an integer >= 8")
+    n = val.whole("samples", samples, 8, MAX_SAMPLES)
     check_engine(engine)
+    return n, val.whole("seed", seed, 0, None)
 
 
 def band_frame(

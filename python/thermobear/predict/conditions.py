@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any, Literal, Mapping, Sequence
 
 import numpy as np
 
+from .. import _validate
 from ..errors import ConfigError
 from ..glossary import GLOSSARY, UNIT_SUFFIXES
 
@@ -57,7 +58,7 @@ def condition_columns(spec: Any) -> tuple[str, ...]:
 def quantities_for(spec: Any, what: str) -> list[str]:
     """The quantities of ``what`` the spec predicts, in its registry's
     order; [`ConfigError`][thermobear.ConfigError] when it predicts none."""
-    if what not in WHATS:
+    if not isinstance(what, str) or what not in WHATS:
         raise ConfigError(f"invalid what = {what!r}: one of {', '.join(WHATS)}")
     if what == "regimes":
         raise ConfigError(
@@ -137,10 +138,12 @@ def _grid(cols: Sequence[str], spec: Mapping[str, Any]) -> polars.DataFrame:
 
     if "speeds_rpm" not in spec:
         raise ConfigError(f"invalid conditions = {dict(spec)!r}: give speeds_rpm")
-    speeds = np.atleast_1d(np.asarray(spec["speeds_rpm"], dtype=float)).tolist()
+    speeds = _validate.reals("speeds_rpm", spec["speeds_rpm"]).tolist()  # sign: below
     loads = list(cols[1:])
     if "loads" in spec:
-        combos = [tuple(np.atleast_1d(np.asarray(x, dtype=float)).tolist()) for x in spec["loads"]]
+        if isinstance(spec["loads"], (str, bytes)) or not hasattr(spec["loads"], "__iter__"):
+            raise ConfigError(f"invalid loads = {spec['loads']!r}: a sequence of load tuples")
+        combos = [tuple(_validate.reals("loads", x).tolist()) for x in spec["loads"]]
         if any(len(c) != len(loads) for c in combos):
             raise ConfigError(f"invalid loads = {spec['loads']!r}: each is ({', '.join(loads)})")
     else:
@@ -161,4 +164,4 @@ def _load_values(spec: Mapping[str, Any], name: str, n_loads: int) -> np.ndarray
         v = 0.0
     if v is None:
         raise ConfigError(f"invalid conditions = {dict(spec)!r}: give {name} (or loads)")
-    return np.atleast_1d(np.asarray(v, dtype=float))
+    return _validate.reals(name, v)

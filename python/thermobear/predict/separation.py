@@ -59,6 +59,7 @@ def separating_measurement(
     import polars as pl
 
     cm = as_calibrated(model)
+    sigma = _checked_sigma(sigma)
     members = tuple(getattr(cm, "members", ()) or ())
     if len(members) < 2:
         raise ConfigError(
@@ -85,6 +86,21 @@ def separating_measurement(
         }]
     ).select([*condition_columns(cm.spec), "quantity", "member_a", "member_b", "value_a",
               "value_b", "sd_a", "sd_b", "unit", "sigma", "separation"])  # fmt: skip
+
+
+def _checked_sigma(sigma: Any) -> Union[float, dict[str, float], None]:
+    """``sigma`` checked: None, a finite number > 0, or a dict quantity ->
+    such a number."""
+    from .. import _validate as val
+
+    if sigma is None:
+        return None
+    if isinstance(sigma, Mapping):
+        return {
+            val.text("sigma key", q): val.real(f"sigma[{q!r}]", v, 0.0, open_lo=True)
+            for q, v in sigma.items()
+        }
+    return val.real("sigma", sigma, 0.0, open_lo=True)
 
 
 def member_moments(

@@ -180,7 +180,9 @@ def sampled_quantiles(
 
 def check_level(level: float) -> float:
     """``level`` as a float in (0, 1)."""
-    lv = float(level)
+    from .. import _validate
+
+    lv = _validate.real("level", level, 0.0, 1.0, open_lo=True)
     if not 0.0 < lv < 1.0:
         raise ConfigError(f"invalid level = {level!r}: a probability in (0, 1), e.g. 0.95")
     return lv

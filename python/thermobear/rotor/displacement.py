@@ -35,6 +35,7 @@ from typing import TYPE_CHECKING, Any, Optional
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .. import _validate as val
 from ..errors import ConfigError
 
 if TYPE_CHECKING:
@@ -45,8 +46,15 @@ def orbit_velocity_mm_s(speed_rpm: Any, displacement_um: Any) -> np.ndarray:
     """The kernel of seed B's model: the velocity amplitude omega e [mm/s]
     of a once-per-revolution orbit of radius ``displacement_um`` [um] at
     ``speed_rpm`` [rpm] (omega = 2 pi n / 60)."""
-    omega = 2.0 * np.pi * np.asarray(speed_rpm, float) / 60.0
-    return omega * np.asarray(displacement_um, float) * 1e-3
+    val.reals("speed_rpm", speed_rpm, allow_empty=True)  # numbers only, finite
+    val.reals("displacement_um", displacement_um, allow_empty=True)
+    n, e = np.asarray(speed_rpm, float), np.asarray(displacement_um, float)
+    try:
+        with np.errstate(over="ignore"):  # an overflow is refused below, by name
+            v = 2.0 * np.pi * n / 60.0 * (e * 1e-3)
+    except ValueError:  # shapes that do not broadcast
+        raise val.fail("displacement_um", displacement_um, f"one value or {n.size}") from None
+    return val.finite_result(v, {"speed_rpm": speed_rpm, "displacement_um": displacement_um})
 
 
 def displacement_vibration(
@@ -70,17 +78,16 @@ def displacement_vibration(
     import polars as pl
 
     from ..spindle import Spindle
+    from .supports import _speeds
 
     sp = Spindle.preset(spindle) if isinstance(spindle, str) else spindle
     if not isinstance(sp, Spindle):
         raise ConfigError(f"invalid spindle = {spindle!r}: give a Spindle or a preset name")
-    if not (np.isfinite(runout_um) and runout_um >= 0.0):
-        raise ConfigError(f"invalid runout_um = {runout_um!r}: a finite eccentricity >= 0 um")
+    runout_um = val.real("runout_um", runout_um, 0.0)
     if radial_load_n is not None:
-        sp = sp.with_options(radial_load_n=float(radial_load_n))
-    s = np.asarray([6_000.0, 12_000.0, 18_000.0] if speeds_rpm is None else speeds_rpm, float)
-    if s.ndim != 1 or s.size == 0 or not np.all(np.isfinite(s)) or np.any(s <= 0.0):
-        raise ConfigError(f"invalid speeds_rpm = {speeds_rpm!r}: finite speeds > 0 rpm")
+        sp = sp.with_options(radial_load_n=val.real("radial_load_n", radial_load_n))
+    s = _speeds(speeds_rpm, np.array([6_000.0, 12_000.0, 18_000.0]), positive=True)
+    coupled = val.flag("coupled", coupled)
     mech, therm = np.empty(s.size), np.empty(s.size)
     for i, v in enumerate(s):
         if coupled:  # the coupled steady state: its deflection and u_Tr
@@ -90,14 +97,14 @@ def displacement_vibration(
             row = sp.isothermal(float(v)).row(0, named=True)
             therm[i] = 0.0
         mech[i] = abs(row["radial_displacement_um"])
-    e_um = mech + therm + float(runout_um)
+    e_um = mech + therm + runout_um
     v = orbit_velocity_mm_s(s, e_um)
     return pl.DataFrame(
         {
             "speed_rpm": s,
             "mechanical_radial_displacement_um": mech,
             "thermal_radial_displacement_um": therm,
-            "runout_um": np.full(s.size, float(runout_um)),
+            "runout_um": np.full(s.size, runout_um),
             "radial_displacement_um": e_um,
             "velocity_mm_s": v,
             "velocity_rms_mm_s": v / np.sqrt(2.0),

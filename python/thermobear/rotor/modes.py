@@ -9,10 +9,17 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .. import _native
+from .. import _validate as val
 from .supports import _effects, _offsets, _resolve, _speeds
 
 if TYPE_CHECKING:
     import polars
+
+
+#: The most modes a Campbell diagram can report: the seed spindle's rotor has
+#: 100 degrees of freedom (``src/rotor/presets.rs``) and the modal basis
+#: keeps 8 modes more than those asked for (``src/rotor/spindle_vibration.rs``).
+MAX_MODES = 92
 
 
 def campbell(
@@ -40,9 +47,9 @@ def campbell(
         mat,
         preload,
         s,
-        modes=int(modes),
+        modes=val.whole("modes", modes, 1, MAX_MODES),
         effects=_effects(effects),
-        offsets=_offsets(spindle, s, coupled),
+        offsets=_offsets(spindle, s, val.flag("coupled", coupled)),
         progress=progress,
     )
     return pl.DataFrame(d)
@@ -71,9 +78,9 @@ def critical_speeds(
         mat,
         preload,
         s,
-        modes=int(modes),
-        harmonic=float(harmonic),
+        modes=val.whole("modes", modes, 1, MAX_MODES),
+        harmonic=val.real("harmonic", harmonic, 0.0, open_lo=True),
         effects=_effects(effects),
-        offsets=_offsets(spindle, s, coupled),
+        offsets=_offsets(spindle, s, val.flag("coupled", coupled)),
     )
     return pl.DataFrame(d)

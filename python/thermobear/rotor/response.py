@@ -9,11 +9,12 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .. import _native
+from .. import _validate as val
 from .._model_hook import takes_calibrated
 from .._partial import speed_frames
 from .._types import ResponseMethod, VibrationModel
-from ..errors import ConfigError, ThermobearError
-from .supports import _effects, _offsets, _resolve, _speeds
+from ..errors import ThermobearError
+from .supports import _effects, _offsets, _resolve, _speeds, _time_record
 
 if TYPE_CHECKING:
     import polars
@@ -58,16 +59,18 @@ def vibration(
     """
     import polars as pl
 
-    if model == "seed-b":
+    coupled = val.flag("coupled", coupled)
+    if val.choice("model", model, ("rotor", "seed-b")) == "seed-b":
         from .displacement import displacement_vibration
 
         return displacement_vibration(spindle, speeds_rpm, coupled).with_columns(
-            pl.lit(bool(coupled)).alias("coupled")
+            pl.lit(coupled).alias("coupled")
         )
-    if model != "rotor":
-        raise ConfigError(f"invalid model = {model!r}: 'rotor' or 'seed-b'")
     mat, preload, _ = _resolve(spindle)
     s = _speeds(speeds_rpm, np.linspace(3_000.0, 30_000.0, 10))
+    method = val.choice("method", method, ("frequency", "time"))
+    unbalance = _unbalance(unbalance_grade, unbalance_g_mm)
+    duration_s = _time_record(float(s.max()), duration_s) if method == "time" else 0.1
 
     def frame(d: Any, _speeds_done: Any = None) -> polars.DataFrame:
         d = dict(d)
@@ -81,10 +84,10 @@ def vibration(
             mat,
             preload,
             s,
-            unbalance_grade=unbalance_grade,
-            unbalance_g_mm=unbalance_g_mm,
+            unbalance_grade=unbalance[0],
+            unbalance_g_mm=unbalance[1],
             method=method,
-            duration_s=float(duration_s),
+            duration_s=duration_s,
             effects=_effects(effects),
             offsets=_offsets(spindle, s, coupled),
             progress=progress,
@@ -138,7 +141,7 @@ def spectrum_orders(
     d = _spectrum_native(
         spindle, speed_rpm, duration_s, coupled, nonlinear, unbalance_grade, unbalance_g_mm, effects
     )
-    f1 = float(speed_rpm) / 60.0
+    f1 = val.real("speed_rpm", speed_rpm) / 60.0  # checked in _spectrum_native
     return pl.DataFrame(
         {
             "order": [1, 2, 3],
@@ -162,14 +165,33 @@ def _spectrum_native(
     effects: Optional[Sequence[str]],
 ) -> dict[str, Any]:
     mat, preload, _ = _resolve(spindle)
+    n = val.real("speed_rpm", speed_rpm, 0.0, open_lo=True)
+    grade, g_mm = _unbalance(unbalance_grade, unbalance_g_mm)
     return _native.rotor_spectrum(
         mat,
         preload,
-        float(speed_rpm),
-        duration_s=float(duration_s),
-        nonlinear=bool(nonlinear),
-        unbalance_grade=unbalance_grade,
-        unbalance_g_mm=unbalance_g_mm,
+        n,
+        duration_s=_time_record(n, duration_s),
+        nonlinear=val.flag("nonlinear", nonlinear),
+        unbalance_grade=grade,
+        unbalance_g_mm=g_mm,
         effects=_effects(effects),
-        offsets=_offsets(spindle, np.array([float(speed_rpm)]), coupled),
+        offsets=_offsets(spindle, np.array([n]), val.flag("coupled", coupled)),
+    )
+
+
+#: The coarsest balance quality grade of ISO 21940-11 (G 4000 [mm/s]), and the
+#: unbalance [g mm] above it on the seed spindle's rotor (G 4000 is 7,841 g mm
+#: there, rounded up): the largest residual unbalances the model accepts.
+_MAX_GRADE = 4000.0
+_MAX_G_MM = 1.0e4
+
+
+def _unbalance(grade: Any, g_mm: Any) -> tuple[Optional[float], Optional[float]]:
+    """The residual unbalance arguments: each None or a finite number in
+    [0, the coarsest ISO 21940-11 grade] (a grade [mm/s], a mass times
+    radius [g mm])."""
+    return (
+        val.optional_real("unbalance_grade", grade, 0.0, _MAX_GRADE),
+        val.optional_real("unbalance_g_mm", g_mm, 0.0, _MAX_G_MM),
     )

@@ -9,6 +9,7 @@ from typing import Any, Callable, Optional, Sequence
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .. import _validate as val
 from ..errors import ConfigError
 
 #: Preset name -> row material of the four rows.
@@ -33,9 +34,9 @@ def _resolve(spindle: Any) -> tuple[str, float, Optional[Callable[[float], dict[
                 "object with a rotor_preset_name attribute (see thermobear.rotor)"
             )
         name = preset
-        preload = float(getattr(spindle, "preload_n", _DEFAULT_PRELOAD_N))
+        preload = val.real("preload_n", getattr(spindle, "preload_n", _DEFAULT_PRELOAD_N), 0.0)
         provider = getattr(spindle, "raceway_offsets", None)
-    if name not in SPINDLE_PRESETS:
+    if not isinstance(name, str) or name not in SPINDLE_PRESETS:
         raise ConfigError(f"rotor_preset_name={name!r}: must be one of {sorted(SPINDLE_PRESETS)}")
     return SPINDLE_PRESETS[name], preload, provider
 
@@ -43,7 +44,7 @@ def _resolve(spindle: Any) -> tuple[str, float, Optional[Callable[[float], dict[
 def _pair(value: Any, pair: str, speed: float) -> tuple[float, float]:
     try:
         radial, axial = (float(v) for v in value)
-    except (TypeError, ValueError) as e:
+    except (TypeError, ValueError, OverflowError) as e:
         raise ConfigError(
             f"raceway_offsets({speed})[{pair!r}]={value!r}: must be (radial_m, axial_m)"
         ) from e
@@ -79,10 +80,37 @@ def _offsets(spindle: Any, speeds: np.ndarray, coupled: bool) -> Optional[dict[s
     return {"speed_rpm": [float(n) for n in grid], **cols}
 
 
-def _speeds(speeds_rpm: Optional[ArrayLike], default: np.ndarray) -> np.ndarray:
-    s = default if speeds_rpm is None else np.asarray(speeds_rpm, dtype=float).ravel()
+def _speeds(
+    speeds_rpm: Optional[ArrayLike], default: np.ndarray, *, positive: bool = False
+) -> np.ndarray:
+    """The speeds [rpm] (``default`` when None): finite, >= 0 (> 0 with ``positive``)."""
+    s = default if speeds_rpm is None else val.reals("speeds_rpm", speeds_rpm, 0.0)
+    if positive and s.min() <= 0.0:
+        raise val.fail("speeds_rpm", speeds_rpm, "finite speeds > 0 rpm")
     return np.ascontiguousarray(s, dtype=float)
 
 
 def _effects(effects: Optional[Sequence[str]]) -> Optional[list[str]]:
-    return None if effects is None else [str(e) for e in effects]
+    return val.optional_names("effects", effects, one=True)
+
+
+#: Time steps per revolution of the rotor's time response, and the most a
+#: run may take (the native integrator's cap: ``src/rotor/spindle_vibration.rs``,
+#: ``src/rotor/transient.rs``).
+STEPS_PER_REVOLUTION = 64
+MAX_TIME_STEPS = 10_000_000
+
+
+def _time_record(speed_rpm: float, duration_s: Any) -> float:
+    """``duration_s`` checked for a time response at ``speed_rpm``: > 0,
+    and no more than ``MAX_TIME_STEPS`` steps of 1/64 revolution."""
+    d = val.real("duration_s", duration_s, 0.0, open_lo=True)
+    steps = d * speed_rpm / 60.0 * STEPS_PER_REVOLUTION
+    if steps > MAX_TIME_STEPS:
+        raise ConfigError(
+            f"invalid duration_s = {d:g} at speed_rpm = {speed_rpm:g}: the time response takes "
+            f"{steps:.3g} steps of 1/{STEPS_PER_REVOLUTION} revolution, more than the "
+            f"{MAX_TIME_STEPS} a run may take; use duration_s <= "
+            f"{MAX_TIME_STEPS * 60.0 / STEPS_PER_REVOLUTION / speed_rpm:.3g} s"
+        )
+    return d

@@ -8,6 +8,7 @@ from typing import Any, Callable, Optional
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .. import _validate as val
 from .._deprecation import renamed_kwargs
 from .._model_hook import takes_calibrated
 from .._names import renamed_spindle_columns, spindle_node, temperature_column
@@ -25,23 +26,31 @@ def transient(
     record_every: int = 1,
     initial_temperature_c: Optional[float] = None,
     mechanics_update_k: float = 0.05,
+    progress: Optional[Callable[[int, int], Any]] = None,
 ) -> Any:
     """Temperatures in time from a uniform start ``initial_temperature_c``
     (default: ambient) at constant speed: ``time_s`` and one
     ``<node>_temperature_c`` column per node (``front_outer_ring_temperature_c``
     ...; the nodes of [`Spindle.node_names`][thermobear.Spindle.node_names]). The
     bearing heat follows the temperatures (quasi-steady mechanics, re-solved
-    when a node moved more than ``mechanics_update_k``)."""
+    when a node moved more than ``mechanics_update_k``).
+
+    At most 10 million steps (``duration_s / dt_s``, a ``ConfigError``
+    naming both beyond) and a million recorded rows (raise
+    ``record_every``). Ctrl-C stops the run within a step, and so does
+    ``progress(steps_done, steps)`` returning ``False``
+    (``thermobear.Interrupted``)."""
     import polars as pl
 
     sp = _check(spindle)
     d = sp._native.transient(
-        float(speed_rpm),
-        float(duration_s),
-        dt_s=float(dt_s),
-        record_every=int(record_every),
-        initial_c=initial_temperature_c,
-        mechanics_update_k=float(mechanics_update_k),
+        val.real("speed_rpm", speed_rpm, 0.0),
+        val.real("duration_s", duration_s, 0.0, open_lo=True),
+        dt_s=val.real("dt_s", dt_s, 0.0, open_lo=True),
+        record_every=val.whole("record_every", record_every, 1),
+        initial_c=val.optional_real("initial_temperature_c", initial_temperature_c, -273.15),
+        mechanics_update_k=val.real("mechanics_update_k", mechanics_update_k, 0.0, open_lo=True),
+        progress=progress,
     )
     t = np.asarray(d["temperatures_c"])
     cols: dict[str, Any] = {"time_s": np.asarray(d["time_s"])}
@@ -66,11 +75,11 @@ def spindle_grid(
     import polars as pl
 
     sp = _check(spindle)
-    loads = [sp.radial_load_n] if radial_loads_n is None else list(np.ravel(radial_loads_n))
+    loads = [sp.radial_load_n] if radial_loads_n is None else radial_loads_n
     d = sp._native.grid(
-        [float(v) for v in np.ravel(speeds_rpm)],
-        [float(v) for v in np.ravel(preloads_n)],
-        [float(v) for v in loads],
+        list(val.reals("speeds_rpm", speeds_rpm, 0.0)),
+        list(val.reals("preloads_n", preloads_n, 0.0)),
+        list(val.reals("radial_loads_n", loads)),
         progress,
     )
     return pl.DataFrame({k: np.asarray(v) for k, v in renamed_spindle_columns(dict(d)).items()})
@@ -127,7 +136,9 @@ def compensation_preload(
 
     sp = _check(spindle)
     d = sp._native.compensation(
-        [float(v) for v in np.ravel(speeds_rpm)], float(spring_rate_n_per_um), progress
+        list(val.reals("speeds_rpm", speeds_rpm, 0.0)),
+        val.real("spring_rate_n_per_um", spring_rate_n_per_um, 0.0, open_lo=True),
+        progress,
     )
     df = pl.DataFrame({k: np.asarray(v) for k, v in d.items()})
     return df.with_columns(pl.lit(float(spring_rate_n_per_um)).alias("spring_rate_n_per_um"))

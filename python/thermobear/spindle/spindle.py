@@ -7,10 +7,12 @@ from typing import Any, Optional, Sequence
 
 import numpy as np
 
-from .. import _native
+from .. import _native, plausibility
+from .. import _validate as val
 from .._deprecation import renamed_kwargs, warn_renamed
 from .._names import spindle_node, temperature_column
 from .._types import PreloadKind
+from ..thermal.oil_supply import SUPPLY_OPTIONS
 
 #: Spring rate implied by seed B Fig. 17: 6.45 N / 17.92 um.
 SEED_B_SPRING_RATE_N_PER_UM = 6.45 / 17.92
@@ -58,14 +60,22 @@ class Spindle:
         [`thermobear.thermal_state`][thermobear.thermal_state]). ``spin_friction_coefficient``:
         mu_s of the spin moment (default 0.05, the same as a single
         bearing's)."""
+        from ..bearing.ball_bearing import _effects_arg
+
         return Spindle(
             self._native.with_options(
-                preload_n=preload_n,
-                preload_kind=preload_kind,
-                spring_rate_n_per_um=spring_rate_n_per_um,
-                radial_load_n=radial_load_n,
-                effects=list(effects) if effects is not None else None,
-                spin_friction=spin_friction_coefficient,
+                preload_n=val.optional_real("preload_n", preload_n, 0.0),
+                preload_kind=None
+                if preload_kind is None
+                else val.choice("preload_kind", preload_kind, ("rigid", "spring")),
+                spring_rate_n_per_um=val.optional_real(
+                    "spring_rate_n_per_um", spring_rate_n_per_um, 0.0, open_lo=True
+                ),
+                radial_load_n=val.optional_real("radial_load_n", radial_load_n),
+                effects=_effects_arg(effects),
+                spin_friction=val.optional_real(
+                    "spin_friction_coefficient", spin_friction_coefficient, 0.0
+                ),
                 heat=_heat_args(heat),
             )
         )
@@ -131,7 +141,7 @@ class Spindle:
         ``unbalanced_magnetic_pull`` effect on), convergence report."""
         import polars as pl
 
-        from ..errors import ConfigError
+        from ..errors import ConfigError, ConvergenceError
 
         if axial_n not in (None, 0.0):
             raise ConfigError(
@@ -158,7 +168,12 @@ class Spindle:
                 spin_friction_coefficient=spin_friction_coefficient,
                 **heat,
             )
-        d = sp._native.steady_state(float(speed_rpm))
+        speed = sp._speed(speed_rpm)
+        try:
+            d = sp._native.steady_state(speed)
+        except ConvergenceError as e:
+            val.name_inputs(e, {"speed_rpm": speed, "preload_n": sp.preload_n})
+            raise
         return pl.DataFrame([_state_row(d, sp)])
 
     _thermal_state = thermal_state
@@ -198,9 +213,9 @@ class Spindle:
             preload, radial = p.get("preload_n"), p.get("radial_n")
             try:
                 row = self.thermal_state(
-                    float(p["speed_rpm"]),
-                    preload_n=None if preload is None else float(preload),
-                    radial_n=None if radial is None else float(radial),
+                    p["speed_rpm"],
+                    preload_n=preload,
+                    radial_n=radial,
                     **options,
                 ).row(0, named=True)
                 rows.append(row)
@@ -238,19 +253,56 @@ class Spindle:
         and rear rows at the coupled steady state of ``speed_rpm`` (the values
         the coupled bearing solve uses, A-38). Makes ``coupled=True`` work in
         the rotor functions."""
-        d = self._native.steady_state(float(speed_rpm))
+        d = self._native.steady_state(self._speed(speed_rpm))
         (front_r, front_a), (rear_r, rear_a) = (
             d["front_raceway_offsets_m"],
             d["rear_raceway_offsets_m"],
         )
         return {"front": (float(front_r), float(front_a)), "rear": (float(rear_r), float(rear_a))}
 
+    def convection_coefficients(
+        self, speeds_rpm: Sequence[float], temperature_difference_k: float = 10.0
+    ) -> Any:
+        """Film coefficient of every convection link of the thermal network
+        against speed (seed B Fig. 2): a long DataFrame ``speed_rpm``,
+        ``link``, ``film_coefficient_w_per_m2_k``. Natural convection depends
+        on the temperature difference across the link, taken as
+        ``temperature_difference_k``; forced convection on speed only."""
+        import polars as pl
+
+        speeds = list(val.reals("speeds_rpm", speeds_rpm, 0.0))
+        dt_k = val.real("temperature_difference_k", temperature_difference_k)
+        names, h = self._native.convection_coefficients(speeds, dt_k)
+        h = np.asarray(h, dtype=float).reshape(len(speeds), len(names))
+        return pl.DataFrame(
+            {
+                "speed_rpm": np.repeat(speeds, len(names)),
+                "link": list(names) * len(speeds),
+                "film_coefficient_w_per_m2_k": h.ravel(),
+            }
+        )
+
+    def _speed(self, speed_rpm: Any) -> float:
+        """``speed_rpm`` checked, and warned past the n dm that the
+        spindle's lubrication supports (its front bearing's pitch diameter)."""
+        speed = val.real("speed_rpm", speed_rpm, 0.0)
+        ndm = self.__dict__.get("_ndm")
+        if ndm is None:
+            from ..bearing import Bearing
+
+            a = self.assumptions
+            pitch = Bearing.preset(str(a["front_bearing"])).geometry["pitch_diameter_mm"]
+            ndm = self.__dict__["_ndm"] = (pitch, a.get("lubrication"))
+        plausibility.check_speed(speed, *ndm)
+        return speed
+
     def isothermal(self, speed_rpm: float) -> Any:
         """Front pair without thermal effects at speed (one-row DataFrame)."""
         import polars as pl
 
-        front, _ = self._native.isothermal(float(speed_rpm))
-        row = {"speed_rpm": float(speed_rpm)}
+        speed = self._speed(speed_rpm)
+        front, _ = self._native.isothermal(speed)
+        row = {"speed_rpm": speed}
         row.update(_pair_row(front))
         return pl.DataFrame([row])
 
@@ -265,12 +317,14 @@ SPINDLE_HEAT_OPTIONS = (
     "sliding_friction_ehl",
     "replenishment_krs",
     "seal_moment_n_m",
+    *SUPPLY_OPTIONS,
 )
 
 
 def _heat_args(heat: dict[str, Any]) -> Optional[dict[str, Any]]:
     """The heat keywords as the native dict (None: nothing given)."""
     from ..errors import ConfigError
+    from ..thermal.oil_supply import supply_dict
     from ..thermal.state import seal_moment_option
 
     heat = seal_moment_option(heat)
@@ -282,10 +336,12 @@ def _heat_args(heat: dict[str, Any]) -> Optional[dict[str, Any]]:
     out = {k: heat.get(k) for k in SPINDLE_HEAT_OPTIONS}
     for k in ("lubrication_factor_f0", "churning_oil_fraction", "sliding_friction_ehl",
               "replenishment_krs", "seal_moment_n_m"):  # fmt: skip
-        v = out[k]
-        out[k] = None if v is None else float(v)
+        out[k] = val.optional_real(k, out[k], 0.0)
     for k in ("heat_model", "lubrication", "skf_series"):
-        out[k] = None if out[k] is None else str(out[k])
+        out[k] = None if out[k] is None else val.text(k, out[k])
+    out["oil_supply"] = supply_dict(heat)
+    for k in SUPPLY_OPTIONS:
+        out.pop(k)
     return out
 
 
@@ -329,8 +385,26 @@ def _state_row(d: dict[str, Any], sp: Spindle) -> dict[str, Any]:
     row["axial_growth_um"] = d["axial_growth_m"] * 1e6
     row["thermal_radial_displacement_um"] = d["front_radial_thermal_displacement_m"] * 1e6
     row["ball_growth_um"] = d["front_ball_growth_m"] * 1e6
+    row.update(_offset_columns(d))
     row["iterations"] = d["iterations"]
     row["temperature_change_k"] = d["temperature_change_k"]
+    return row
+
+
+def _offset_columns(d: dict[str, Any]) -> dict[str, float]:
+    """Thermal displacements of both rows [um]: radial and axial groove-centre
+    offsets (positive = more interference), the groove-centre growths and
+    the ball growth (seed B Fig. 8)."""
+    row: dict[str, float] = {}
+    for pair in ("front", "rear"):
+        radial, axial = d[f"{pair}_raceway_offsets_m"]
+        if pair == "rear":
+            row["rear_thermal_radial_displacement_um"] = radial * 1e6
+        row[f"{pair}_axial_thermal_displacement_um"] = axial * 1e6
+        u_ic, u_oc = d.get(f"{pair}_groove_centres_m", (float("nan"), float("nan")))
+        row[f"{pair}_inner_groove_centre_um"] = u_ic * 1e6
+        row[f"{pair}_outer_groove_centre_um"] = u_oc * 1e6
+    row["rear_ball_growth_um"] = d.get("rear_ball_growth_m", float("nan")) * 1e6
     return row
 
 

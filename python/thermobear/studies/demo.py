@@ -1,5 +1,5 @@
 """``thermobear demo``: the seed studies, written as tables (parquet + CSV)
-and figures (PNG) into an output folder.
+and figures (PNG, and PDF or SVG when asked) into an output folder.
 
 Each study is a function ``study_*(out: Path, quick: bool) -> list[Path]``.
 """
@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Sequence
+
+from .output import DEFAULT_DPI, figure_options
 
 # Each study: (name, "module:function") inside thermobear, imported when run.
 STUDIES: list[tuple[str, str]] = [
@@ -32,11 +34,27 @@ def study_function(spec: str) -> Callable[[Path, bool], list[Path]]:
     return getattr(importlib.import_module(f"thermobear.{module}"), func)
 
 
-def run_demo(out: Path, quick: bool = False) -> Path:
-    """Run every study into ``out`` and return it."""
-    out.mkdir(parents=True, exist_ok=True)
-    for name, spec in STUDIES:
-        t0 = time.perf_counter()
-        files = study_function(spec)(out / name, quick)
-        print(f"  {name}: {len(files)} files in {time.perf_counter() - t0:.1f} s", flush=True)
+def run_demo(
+    out: Path,
+    quick: bool = False,
+    *,
+    formats: str | Sequence[str] = ("png",),
+    dpi: float = DEFAULT_DPI,
+) -> Path:
+    """Run every study into ``out`` and return it; every figure is written
+    in each of ``formats`` (``"png"``, ``"pdf"``, ``"svg"``; a comma list or
+    a sequence) as ``<stem>.<format>``, a PNG at ``dpi``, all in the
+    package's style (``thermobear.plot.set_style`` changes it)."""
+    from ..plot.style import style_context
+
+    # every figure, the studies' own ones too, in the package's style
+    with figure_options(formats, dpi), style_context():
+        out.mkdir(parents=True, exist_ok=True)
+        for name, spec in STUDIES:
+            t0 = time.perf_counter()
+            files = study_function(spec)(out / name, quick)
+            print(f"  {name}: {len(files)} files in {time.perf_counter() - t0:.1f} s", flush=True)
+        from .reproduction_table import write_reproduction
+
+        write_reproduction(out)  # reproduction.csv/.parquet and its summary line
     return out

@@ -39,6 +39,7 @@ from ..diagnosis.spindle_spec import (
 )
 from ..spindle import Spindle
 from .output import save_figure, write_table
+from .seed_b_spindle import SUPPLY
 
 #: Seed B's simulated values quoted beside the measurements ("Experimental
 #: results and analysis"): coupled vibration 18.78 mm/s at 18,000 r/min;
@@ -70,7 +71,8 @@ def study_diagnose_seed_b(out: Path, quick: bool) -> list[Path]:
 
     from .. import plot
 
-    spindle = Spindle.preset("seed-ceramic-spindle")
+    # seed B's stated lubrication (oil-air, 5 mL/h): the ball drag follows it
+    spindle = Spindle.preset("seed-ceramic-spindle").with_options(**SUPPLY)
     base = baseline_without_thermal_displacement(spindle)
     coupled = base.with_setting(["thermal_displacement"])
     measured = seed_b_measurements()
@@ -131,7 +133,7 @@ SYNTHETIC_QUANTITIES = (
 def synthetic_seed_b(base: SpindleModelSpec, out: Path, quick: bool) -> list[Path]:
     """Seed B's story with the effect hidden on purpose: "measurements" made
     by our model WITH thermal displacement at seed B's test speeds and
-    preload (typical noise: 0.5 K, 5 % vibration, 0.5 um), diagnosed from
+    preload (typical noise: 0.5 K, 5 % vibration, 0.5 µm), diagnosed from
     the model without it. Writes the verdict and the gap before/after."""
     import polars as pl
 
@@ -224,7 +226,7 @@ def _runout_reading(d) -> str:
         return "The vibration residual stays unexplained. "
     a = run[0]
     return (
-        f"It is what a shaft runout of {a['value']:.1f} um (95 % [{a['lower_95']:.1f}, "
+        f"It is what a shaft runout of {a['value']:.1f} µm (95 % [{a['lower_95']:.1f}, "
         f"{a['upper_95']:.1f}]) reads on a non-contact vibrometer at 18,000 rpm "
         "(1X velocity omega x runout): the measured number is explained on the measurement "
         "side, not by the rotor's dynamics. With one vibration point this is a one-parameter "
@@ -244,6 +246,8 @@ def _curves(base, coupled, measured, out: Path, quick: bool) -> list[Path]:
     import polars as pl
 
     from ..plot.axes import get_axes
+    from ..plot.labels import axis_label
+    from ..plot.style import place_legend
 
     speeds = np.arange(6000.0, 18001.0, 6000.0 if quick else 1000.0)
     cond = pl.DataFrame({"speed_rpm": speeds, "preload_n": 400.0, "radial_n": 0.0})
@@ -265,14 +269,20 @@ def _curves(base, coupled, measured, out: Path, quick: bool) -> list[Path]:
                 table[col].to_numpy(),
                 ls,
                 color=f"C{i}",
-                label=f"{part}, {label} thermal displacement",
+                label=f"{part.replace('_', ' ')} ring, {label} thermal displacement",
             )
         k = [j for j, qq in enumerate(mq) if qq == f"{part}_ring_temperature_c"]
-        ax.plot(ms[k], my[k], "o", color=f"C{i}", label=f"{part}, seed B measured")
-    ax.set_xlabel("speed [rpm]")
-    ax.set_ylabel("outer-ring temperature [C]")
+        ax.plot(
+            ms[k],
+            my[k],
+            "o",
+            color=f"C{i}",
+            label=f"{part.replace('_', ' ')} ring, seed B measured",
+        )
+    ax.set_xlabel(axis_label("speed_rpm"))
+    ax.set_ylabel("outer-ring temperature [°C]")
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+    place_legend(ax)
     files.append(save_figure(ax, out, "diagnose_seed_b_temperatures"))
     ax = get_axes(None)
     for label, ls in (("without", "--"), ("with", "-")):
@@ -287,9 +297,9 @@ def _curves(base, coupled, measured, out: Path, quick: bool) -> list[Path]:
         color="C3",
         label="seed B simulation (uncoupled, coupled)",
     )
-    ax.set_xlabel("speed [rpm]")
-    ax.set_ylabel("shaft-end velocity RMS [mm/s]")
+    ax.set_xlabel(axis_label("speed_rpm"))
+    ax.set_ylabel("shaft-end " + axis_label("velocity_rms_mm_s"))
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
+    place_legend(ax)
     files.append(save_figure(ax, out, "diagnose_seed_b_vibration"))
     return files

@@ -3,7 +3,7 @@
 Seed A's gearbox bearing (6208 at the 100 N m load case: Fa = 2680.9 N with
 the 300 N preload, Fr = 1189.9 N) is "measured" on a rig: outer-ring and
 housing temperatures and the axial displacement at a few speeds between
-4000 and 10,000 rpm, with the typical noise (0.5 K thermocouples, 0.5 um
+4000 and 10,000 rpm, with the typical noise (0.5 K thermocouples, 0.5 µm
 displacement probe). The measurements hide one effect the baseline leaves
 out: the housing sheds heat at half the rate the thermal network assumes
 (``housing_conductance_scale`` = 0.5, a housing in a warm, still gearbox).
@@ -12,7 +12,7 @@ gives, predicts the thermal stiffness curve over seed A's speed range
 (6500-16,500 rpm) with its 95 % band and sets the truth beside it, then
 predicts the gear pair's regimes on the calibrated bearings with the
 regime-boundary intervals (the light, strongly excited operating point of
-the seed gear study: 20 N m, TE 10 um, where the teeth separate).
+the seed gear study: 20 N m, TE 10 µm, where the teeth separate).
 
 Then seed B's spindle: calibrated on its two measured outer-ring
 temperatures (12,000 rpm), it predicts what the paper reports at other
@@ -28,6 +28,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..plot.labels import human_name
+from ..plot.style import place_legend
 from .output import save_figure, write_table
 
 if TYPE_CHECKING:
@@ -145,7 +147,7 @@ def seed_a_bearing(out: Path, quick: bool) -> tuple[list[Path], list[str], Any]:
     files += write_table(stiff, out, "rig_to_prediction_stiffness_band")
     for q, stem in (("outer_ring_temperature_c", "To"), ("axial_displacement_um", "axial")):
         ax = plot.prediction_band(seen, q, measured=measured)
-        ax.set_title(f"seed A rig: {q}, calibrated model with its 95 % band")
+        ax.set_title(f"seed A rig: {human_name(q)}, calibrated model with its 95 % band")
         files.append(save_figure(ax, out, f"rig_to_prediction_rig_{stem}"))
     files.append(_stiffness_figure(stiff, out))
     top = stiff.filter(
@@ -157,7 +159,7 @@ def seed_a_bearing(out: Path, quick: bool) -> tuple[list[Path], list[str], Any]:
         d.summary(),
         f"calibrated model: {cm!r}",
         f"radial stiffness k_xx at {PREDICT_RANGE_RPM[1]:.0f} rpm: "
-        f"{top['value'][0] / 1e6:.2f} N/um, 95 % [{top['lower'][0] / 1e6:.2f}, "
+        f"{top['value'][0] / 1e6:.2f} N/µm, 95 % [{top['lower'][0] / 1e6:.2f}, "
         f"{top['upper'][0] / 1e6:.2f}] (truth {top['truth'][0] / 1e6:.2f})",
     ]
     return files, lines, cm
@@ -172,7 +174,7 @@ def _stiffness_figure(stiff: polars.DataFrame, out: Path) -> Path:
     ax = plot.prediction_band(stiff, "k_xx_n_per_m")
     k = stiff.filter(pl.col("quantity") == "k_xx_n_per_m").sort("speed_rpm")
     ax.plot(k["speed_rpm"], k["truth"] / 1e6, "k:", label="truth (hidden effect)")
-    ax.legend(fontsize=7)
+    place_legend(ax)
     ax.set_title("seed A: thermal radial stiffness of the calibrated 6208")
     return save_figure(ax, out, "rig_to_prediction_stiffness")
 
@@ -210,7 +212,7 @@ def seed_a_gear(cm: Any, out: Path, quick: bool) -> tuple[list[Path], list[str]]
     files.append(save_figure(plot.regime_probability(pred), out, "rig_to_prediction_regimes"))
     likely = b.filter(pl.col("probability") >= 0.5)
     lines = [
-        f"gear regime boundaries (20 N m, TE 10 um, run-down, {pred['member'].n_unique()} "
+        f"gear regime boundaries (20 N m, TE 10 µm, run-down, {pred['member'].n_unique()} "
         "model(s)), 95 % intervals, those at least half the samples cross:"
     ]
     lines += [
@@ -258,8 +260,8 @@ def seed_b_spindle(out: Path, quick: bool) -> tuple[list[Path], list[str]]:
         rows = table.filter((pl.col("quantity") == q) & ~pl.col("calibrated_on"))
         if rows.height:
             ax.plot(rows["speed_rpm"], rows["paper_value"], "x", color="C3", label="seed B's value")
-            ax.legend(fontsize=7)
-        ax.set_title(f"seed B spindle: {q}, calibrated on the measured temperatures")
+            place_legend(ax)
+        ax.set_title(f"seed B spindle: {human_name(q)}, calibrated on the measured temperatures")
         files.append(save_figure(ax, out, f"rig_to_prediction_seed_b_{stem}"))
     lines = [
         "seed B spindle calibrated on its measured outer-ring temperatures (12,000 rpm):",

@@ -3,7 +3,7 @@
 
 Setup (assumed, see ``Spindle.assumptions``): the seed-B spindle preset
 with hybrid (Si3N4-ball) 7009C/7008C pairs, spring (constant-pressure)
-preload with seed B's implied rate 0.36 N/um, working radial load 500 N at
+preload with seed B's implied rate 0.36 N/µm, working radial load 500 N at
 the nose for the displacement study. Nothing is tuned to the paper.
 """
 
@@ -15,7 +15,6 @@ from typing import Any
 import numpy as np
 
 from .. import plot
-from ..plot.axes import get_axes
 from ..spindle import (
     SEED_B_SPRING_RATE_N_PER_UM,
     Spindle,
@@ -30,9 +29,18 @@ from .output import save_figure, write_table
 WORKING_RADIAL_LOAD_N = 500.0
 
 
+#: Seed B's lubrication as its test conditions state it: oil-air, 5 mL/h of
+#: oil at 0.25 MPa (air flow not given). The cavity oil fraction follows
+#: this flow and the speed (docs/concepts/physics.md §9, oil supply): about
+#: 0.6-0.2 % at 6000-18,000 rpm, a ball drag of 0.6-5.8 W per front bearing,
+#: 1-2.5 % of its heat. The spindle preset itself keeps the fixed (zero)
+#: drag fraction.
+SUPPLY: dict[str, Any] = {"oil_volume_cm3_per_h": 5.0}
+
+
 def _base(variant: str = "ceramic") -> Any:
     return Spindle.preset(f"seed-{variant}-spindle").with_options(
-        preload_kind="spring", spring_rate_n_per_um=SEED_B_SPRING_RATE_N_PER_UM
+        preload_kind="spring", spring_rate_n_per_um=SEED_B_SPRING_RATE_N_PER_UM, **SUPPLY
     )
 
 
@@ -53,32 +61,99 @@ def _pick(df: Any, col: str, **where: float) -> float:
 
 
 def study_seed_b_spindle(out: Path, quick: bool = False) -> list[Path]:
-    """Transient and steady temperatures, thermal displacement steel vs
-    ceramic, contact angles and loads, radial stiffness with and without
-    thermal effects, optimal and compensation preload, paper table."""
+    """Convection coefficients, temperature field, transient and steady
+    temperatures, thermal displacement steel vs ceramic, contact angles and
+    loads, radial stiffness with and without thermal effects, radial
+    displacement, optimal and compensation preload, outer-ring temperature
+    against the measurement, paper table. Each coupled state is solved once
+    and drawn in every figure that shows it."""
+    import polars as pl
+
+    from .seed_b_mechanics import (
+        contact_angles,
+        contact_loads,
+        radial_displacement,
+        radial_stiffness,
+    )
+
     sp = _base("ceramic")
     speeds = (
         [6_000.0, 12_000.0, 18_000.0] if quick else [6_000.0, 9_000.0, 12_000.0, 15_000.0, 18_000.0]
     )
     preloads = [300.0, 400.0, 500.0]
     opt_speeds = [12_000.0, 15_000.0, 18_000.0]
-    files, settle = _transient(sp, quick, out)
-    f, vs_preload = _steady_temperatures(sp, speeds, preloads, out)
-    files += f
-    f, disp = _thermal_displacement(sp, _base("steel"), speeds, out)
-    files += f
     mech = _contact_and_stiffness(sp, speeds, preloads)
-    files += write_table(mech, out, "seed_b_contact_and_stiffness")
-    files += _contact_figures(mech, preloads, out)
-    f, best = _optimal_preload(sp, opt_speeds, quick, out)
+    files = write_table(mech, out, "seed_b_contact_and_stiffness")
+    f, settle, tr = _transient(sp, quick, out)
     files += f
+    vs_speed = mech.filter(pl.col("preload_n") == sp.preload_n)
+    f, vs_preload = _steady_temperatures(sp, mech, out)
+    files += f
+    f, disp = _thermal_displacement(vs_speed, _base("steel"), speeds, out)
+    files += f
+    files += _thermal_figures(sp, mech, tr, vs_speed, out)
+    files += [radial_stiffness(mech, out), contact_angles(mech, out), contact_loads(mech, out)]
+    f, best, scan = _optimal_preload(sp, opt_speeds, quick, out)
+    files += f
+    files.append(radial_displacement(mech, scan, out))
     comp = compensation_preload(
         sp, speeds_rpm=opt_speeds, spring_rate_n_per_um=SEED_B_SPRING_RATE_N_PER_UM
     )
     files += write_table(comp, out, "seed_b_compensation_preload")
-    files.append(save_figure(plot.compensation_preload(comp), out, "seed_b_fig17_compensation"))
+    ax = plot.compensation_preload(comp)
+    ax.set_title("Seed B Fig. 17: compensation preload from the axial thermal growth")
+    files.append(save_figure(ax, out, "seed_b_fig17_compensation"))
+    files += _parameter_tables(sp, out)
     table = _paper_table(vs_preload, disp, mech, best, comp, settle)
     files += write_table(table, out, "paper_vs_thermobear_seed_b")
+    return files
+
+
+def _parameter_tables(sp: Any, out: Path) -> list[Path]:
+    """Tables 2-3 counterparts: seed B's bearing and spindle parameter tables
+    are lost from its text, so these list the values the presets assume."""
+    import polars as pl
+
+    from ..bearing import Bearing
+
+    a = sp.assumptions
+    names = [a["front_bearing"], a["rear_bearing"]]
+    geo = [Bearing.preset(n).geometry for n in names]
+    bearings = pl.DataFrame({"bearing": names, **{k: [g[k] for g in geo] for k in geo[0]}})
+    files = write_table(bearings, out, "seed_b_table2_bearing_parameters")
+    spindle = pl.DataFrame(
+        {"parameter": list(a), "value": [str(v) for v in a.values()]},
+        schema=[("parameter", pl.Utf8), ("value", pl.Utf8)],
+    )
+    files += write_table(spindle, out, "seed_b_table3_spindle_parameters")
+    return files
+
+
+def _thermal_figures(sp: Any, mech: Any, tr: Any, vs_speed: Any, out: Path) -> list[Path]:
+    """Figs. 2, 3, 4, 5, 6 and 19 (and Table 1) from the solved frames."""
+    import polars as pl
+
+    from ..diagnosis.spindle_spec import seed_b_measurements
+    from . import seed_b_thermal as th
+
+    p = f"{sp.preload_n:.0f} N"
+    files, _ = th.convection(sp, out, np.arange(1_000.0, 18_001.0, 1_000.0))
+    at12 = vs_speed.filter(pl.col("speed_rpm") == 12_000.0)
+    files += th.temperature_field(
+        sp, at12, out, f"Seed B Fig. 3: node temperatures at 12,000 rpm, {p} (lumped network)"
+    )
+    files.append(
+        th.transient_front_rear(
+            tr, out, f"Seed B Fig. 4: transient temperatures at 12,000 rpm, {p} spring preload"
+        )
+    )
+    files.append(
+        th.steady_front_rear(
+            vs_speed, out, f"Seed B Fig. 5: steady temperatures against speed, {p}"
+        )
+    )
+    files.append(th.ball_vs_preload(mech, out))
+    files += th.outer_ring_vs_measurement(tr, vs_speed, seed_b_measurements(), out)
     return files
 
 
@@ -86,12 +161,9 @@ def _transient(sp: Any, quick: bool, out: Path) -> tuple:
     """Fig. 4: transient at 12,000 rpm from ambient; when each front node
     settles (95 % of its rise, and within 0.5 K of the steady state)."""
     files: list[Path] = []
-    dur, dt = (3600.0, 20.0) if quick else (5400.0, 2.0)
-    tr = transient(sp, speed_rpm=12_000.0, duration_s=dur, dt_s=dt, record_every=1 if quick else 5)
+    dur, dt = (3600.0, 5.0) if quick else (5400.0, 2.0)
+    tr = transient(sp, speed_rpm=12_000.0, duration_s=dur, dt_s=dt, record_every=4 if quick else 5)
     files += write_table(tr, out, "seed_b_transient_12000rpm")
-    ax = plot.spindle_transient(tr)
-    ax.set_title("Spindle at 12,000 rpm, 300 N spring preload")
-    files.append(save_figure(ax, out, "seed_b_fig4_transient"))
     steady12 = sp.thermal_state(speed_rpm=12_000.0)
     settle = {}
     for node in ("front_ball", "front_inner_ring", "front_outer_ring"):
@@ -102,52 +174,39 @@ def _transient(sp: Any, quick: bool, out: Path) -> tuple:
         ok95 = (v - start) >= 0.95 * (target - start)
         ok05 = np.abs(v - target) <= 0.5
         settle[node] = (_first_stay(t, ok95), _first_stay(t, ok05))
-    return files, settle
+    return files, settle, tr
 
 
-def _steady_temperatures(sp: Any, speeds: list, preloads: list, out: Path) -> tuple:
-    """Figs. 5-6: steady temperatures vs speed and preload."""
-    files: list[Path] = []
-    vs_speed = _states(sp, speeds, [300.0])
-    files += write_table(vs_speed, out, "seed_b_steady_vs_speed")
-    ax = plot.spindle_temperatures(vs_speed, x="speed_rpm")
-    ax.set_title("Steady temperatures vs speed, 300 N")
-    files.append(save_figure(ax, out, "seed_b_fig5_temperatures_vs_speed"))
-    vs_preload = _states(sp, [18_000.0], preloads)
-    files += write_table(vs_preload, out, "seed_b_steady_vs_preload")
-    ax = plot.spindle_temperatures(vs_preload, x="preload_n")
-    ax.set_title("Steady temperatures vs preload, 18,000 rpm")
-    files.append(save_figure(ax, out, "seed_b_fig6_temperatures_vs_preload"))
-    return files, vs_preload
-
-
-def _thermal_displacement(sp: Any, steel: Any, speeds: list, out: Path) -> tuple:
-    """Fig. 8: radial thermal displacement, steel vs ceramic balls."""
+def _steady_temperatures(sp: Any, mech: Any, out: Path) -> tuple:
+    """Tables of Figs. 5-6: steady temperatures against speed at the
+    spindle's preload, and against preload at 18,000 rpm (from ``mech``)."""
     import polars as pl
 
     files: list[Path] = []
+    vs_speed = mech.filter(pl.col("preload_n") == sp.preload_n)
+    files += write_table(vs_speed, out, "seed_b_steady_vs_speed")
+    vs_preload = mech.filter(pl.col("speed_rpm") == float(mech["speed_rpm"].max()))
+    files += write_table(vs_preload, out, "seed_b_steady_vs_preload")
+    return files, vs_preload
+
+
+def _thermal_displacement(ceramic: Any, steel: Any, speeds: list, out: Path) -> tuple:
+    """Fig. 8: radial and axial thermal displacement of both bearings,
+    Si3N4 (the states already solved) against steel balls."""
+    import polars as pl
+
+    from .seed_b_thermal import thermal_displacement
+
+    p = float(ceramic["preload_n"][0])
     disp = pl.concat(
         [
-            _states(s, speeds, [300.0]).with_columns(pl.lit(lab).alias("balls"))
-            for s, lab in ((sp, "Si3N4"), (steel, "steel"))
+            ceramic.with_columns(pl.lit("Si3N4").alias("balls")),
+            _states(steel, speeds, [p]).with_columns(pl.lit("steel").alias("balls")),
         ],
         how="diagonal",
     )
-    files += write_table(disp, out, "seed_b_thermal_displacement")
-    ax = get_axes(None)
-    for lab in ("Si3N4", "steel"):
-        d = disp.filter(pl.col("balls") == lab)
-        ax.plot(
-            d["speed_rpm"].to_numpy(),
-            d["thermal_radial_displacement_um"].to_numpy(),
-            "o-",
-            label=lab,
-        )
-    ax.set_xlabel("speed [rpm]")
-    ax.set_ylabel("radial thermal displacement [µm]")
-    ax.legend()
-    ax.grid(True, alpha=0.3)
-    files.append(save_figure(ax, out, "seed_b_fig8_thermal_displacement"))
+    files = write_table(disp, out, "seed_b_thermal_displacement")
+    files.append(thermal_displacement(disp, out))
     return files, disp
 
 
@@ -165,72 +224,24 @@ def _contact_and_stiffness(sp: Any, speeds: list, preloads: list) -> Any:
         ],
         how="diagonal",
     )
+    iso_cols = ("inner_contact_angle", "outer_contact_angle", "inner_load_max", "outer_load_max")
     mech = mech.join(
         iso.select(
             "speed_rpm",
             "preload_n",
             pl.col("k_xx_n_per_m").alias("k_xx_isothermal_n_per_m"),
-            pl.col("inner_contact_angle_deg").alias("inner_contact_angle_isothermal_deg"),
-            pl.col("outer_contact_angle_deg").alias("outer_contact_angle_isothermal_deg"),
+            *(pl.col(f"{c}_deg").alias(f"{c}_isothermal_deg") for c in iso_cols[:2]),
+            *(pl.col(f"{c}_n").alias(f"{c}_isothermal_n") for c in iso_cols[2:]),
         ),
         on=["speed_rpm", "preload_n"],
     )
     return mech
 
 
-def _contact_figures(mech: Any, preloads: list, out: Path) -> list[Path]:
-    """Figs. 12-14 drawn: contact angles, outer contact loads, radial
-    stiffness with and without thermal."""
-    import polars as pl
-
-    files: list[Path] = []
-    ax = get_axes(None)
-    for p in preloads:
-        d = mech.filter(pl.col("preload_n") == p).sort("speed_rpm")
-        s = d["speed_rpm"].to_numpy()
-        ax.plot(s, d["inner_contact_angle_deg"].to_numpy(), "o-", label=f"inner {p:.0f} N")
-        ax.plot(s, d["outer_contact_angle_deg"].to_numpy(), "s--", label=f"outer {p:.0f} N")
-    ax.set_xlabel("speed [rpm]")
-    ax.set_ylabel("contact angle [deg]")
-    ax.legend(fontsize=7)
-    ax.grid(True, alpha=0.3)
-    files.append(save_figure(ax, out, "seed_b_fig13_contact_angles"))
-    ax = get_axes(None)
-    for p in preloads:
-        d = mech.filter(pl.col("preload_n") == p).sort("speed_rpm")
-        ax.plot(
-            d["speed_rpm"].to_numpy(), d["outer_load_max_n"].to_numpy(), "o-", label=f"{p:.0f} N"
-        )
-    ax.set_xlabel("speed [rpm]")
-    ax.set_ylabel("outer contact load [N]")
-    ax.legend()
-    ax.grid(True, alpha=0.3)
-    files.append(save_figure(ax, out, "seed_b_fig14_contact_loads"))
-    ax = get_axes(None)
-    d = mech.filter(pl.col("preload_n") == 300.0).sort("speed_rpm")
-    ax.plot(
-        d["speed_rpm"].to_numpy(),
-        d["k_xx_n_per_m"].to_numpy() / 1e6,
-        "o-",
-        label="thermal",
-    )
-    ax.plot(
-        d["speed_rpm"].to_numpy(),
-        d["k_xx_isothermal_n_per_m"].to_numpy() / 1e6,
-        "s--",
-        label="no thermal",
-    )
-    ax.set_xlabel("speed [rpm]")
-    ax.set_ylabel("front pair radial stiffness [N/µm]")
-    ax.legend()
-    ax.grid(True, alpha=0.3)
-    files.append(save_figure(ax, out, "seed_b_fig12_radial_stiffness"))
-    return files
-
-
 def _optimal_preload(sp: Any, opt_speeds: list, quick: bool, out: Path) -> tuple:
-    """Figs. 15-16: the preload scan under the working radial load and the
-    preload of least total radial displacement per speed."""
+    """Fig. 16 (and the data of Fig. 15b): the preload scan under the
+    working radial load and the preload of least total radial displacement
+    per speed."""
     import polars as pl
 
     files: list[Path] = []
@@ -250,9 +261,11 @@ def _optimal_preload(sp: Any, opt_speeds: list, quick: bool, out: Path) -> tuple
     )
     files += write_table(best, out, "seed_b_optimal_preload")
     ax = plot.optimal_preload(grid)
-    ax.set_title(f"Total radial displacement, {WORKING_RADIAL_LOAD_N:.0f} N at the nose")
-    files.append(save_figure(ax, out, "seed_b_fig15_optimal_preload"))
-    return files, best
+    ax.set_title(
+        f"Seed B Fig. 16: total radial displacement, {WORKING_RADIAL_LOAD_N:.0f} N at the nose"
+    )
+    files.append(save_figure(ax, out, "seed_b_fig16_optimal_preload"))
+    return files, best, grid
 
 
 def _first_stay(t: Any, ok: Any) -> float:
@@ -278,8 +291,8 @@ _TEMPS = (
 )
 _HARRIS = (
     "trend differs from seed B Fig. 13a: centrifugal force presses the balls outward, "
-    "the outer contact "
-    "flattens and the inner steepens (Harris & Kotzalas); seed B reports the opposite"
+    "the outer contact flattens and the inner steepens (Harris & Kotzalas); seed B "
+    "reports the opposite, as if its inner and outer labels were exchanged"
 )
 _RDEF = (
     "our radial thermal displacement = groove-centre interference u_Tr plus the ball "
@@ -380,15 +393,15 @@ def _rows_contact(mech: Any) -> list[tuple]:
         f"{lo:.0f} rpm, 300 N",
         15.54,
         "deg",
-        _pick(m300, "inner_contact_angle_deg", speed_rpm=lo),
-        "mean over balls, coupled thermal state",
+        _pick(m300, "inner_contact_angle_isothermal_deg", speed_rpm=lo),
+        "mean over balls, uncoupled (Fig. 13a)",
     )
     add(
         "inner contact angle",
         f"{hi:.0f} rpm, 300 N",
         13.31,
         "deg",
-        _pick(m300, "inner_contact_angle_deg", speed_rpm=hi),
+        _pick(m300, "inner_contact_angle_isothermal_deg", speed_rpm=hi),
         _HARRIS,
     )
     add(
@@ -396,15 +409,15 @@ def _rows_contact(mech: Any) -> list[tuple]:
         f"{lo:.0f} rpm, 300 N",
         16.13,
         "deg",
-        _pick(m300, "outer_contact_angle_deg", speed_rpm=lo),
-        "mean over balls, coupled thermal state",
+        _pick(m300, "outer_contact_angle_isothermal_deg", speed_rpm=lo),
+        "mean over balls, uncoupled (Fig. 13a)",
     )
     add(
         "outer contact angle",
         f"{hi:.0f} rpm, 300 N",
         18.69,
         "deg",
-        _pick(m300, "outer_contact_angle_deg", speed_rpm=hi),
+        _pick(m300, "outer_contact_angle_isothermal_deg", speed_rpm=hi),
         _HARRIS,
     )
     add(
@@ -412,8 +425,8 @@ def _rows_contact(mech: Any) -> list[tuple]:
         "18,000 rpm, 500 N",
         104.35,
         "N",
-        _pick(mech, "outer_load_max_n", speed_rpm=hi, preload_n=500.0),
-        "largest ball; assumed internal geometry (16 balls of 11/32 in)",
+        _pick(mech, "outer_load_max_isothermal_n", speed_rpm=hi, preload_n=500.0),
+        "largest ball, uncoupled (Fig. 14a); assumed internal geometry (16 balls of 11/32 in)",
     )
     add(
         "outer contact load",
@@ -421,7 +434,8 @@ def _rows_contact(mech: Any) -> list[tuple]:
         96.13,
         "N",
         _pick(mech, "outer_load_max_n", speed_rpm=hi, preload_n=400.0),
-        "largest ball; assumed internal geometry (16 balls of 11/32 in)",
+        "largest ball, thermally coupled (Fig. 14b); assumed internal geometry "
+        "(16 balls of 11/32 in)",
     )
     return rows
 
@@ -488,7 +502,7 @@ def _rows_preload(best: Any, comp: Any) -> list[tuple]:
             f,
             "N",
             _pick(comp, "compensation_preload_n", speed_rpm=n),
-            "k_s u with k_s = 0.36 N/um (implied by seed B: 6.45 N / 17.92 um); "
+            "k_s u with k_s = 0.36 N/µm (implied by seed B: 6.45 N / 17.92 µm); "
             "differs through the growth",
         )
     return rows

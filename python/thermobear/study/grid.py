@@ -90,6 +90,12 @@ class Grid:
     ``fixed`` (name -> value) over one kind's inputs."""
 
     def __init__(self, kind: Kind, dims: Mapping[str, Any], fixed: Optional[Mapping] = None):
+        for label, given in (("grid", dims), ("fixed", fixed)):
+            if not isinstance(given, Mapping) and not (label == "fixed" and given is None):
+                raise ConfigError(
+                    f"invalid {label} = {given!r}: must be a mapping of input name to "
+                    + ("values" if label == "grid" else "value")
+                )
         fixed = dict(fixed or {})
         self.kind = kind
         self.dims: dict[str, list] = {}

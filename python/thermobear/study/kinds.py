@@ -692,7 +692,7 @@ def register_kind(kind: Kind) -> None:
 
 
 def kind_of(name: str) -> Kind:
-    if name not in KINDS:
+    if not isinstance(name, str) or name not in KINDS:
         raise ConfigError(f"invalid kind = {name!r}: known: {', '.join(KINDS)}")
     return KINDS[name]
 

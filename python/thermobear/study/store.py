@@ -1,21 +1,44 @@
 """A study's results on disk: ``manifest.json`` (the study description and
 its hash) and one parquet file per chunk under ``chunks/``
-(``chunk-000000.parquet`` ...), each written to a temporary file first and
-renamed into place, so a file that exists is complete. A directory whose
-manifest describes another grid is never mixed with this one."""
+(``chunk-000000.parquet`` ...), each with its check record
+(``chunk-000000.check.json``: the grid hash, the chunk index, its point
+range and the SHA-256 of the parquet file).
+
+Nothing is trusted by its name: a chunk is reused only when its record
+matches this grid, this index and this range and the file's checksum
+matches; any other chunk (swapped, truncated, zeroed, written by another
+grid, or without a record) is recomputed with a warning naming its file.
+
+One run owns a directory at a time: an advisory lock
+(``.thermobear-study.lock``, ``fcntl.flock``, holding the owner's process
+id, host and run id) refuses a second run with a ``ConfigError`` naming
+the first one's process. Files are written to temporary files carrying the
+run's id and renamed into place; a run removes only its own temporary
+files. ``overwrite=True`` starts the directory afresh, whatever it holds."""
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 import shutil
+import socket
+import time
+import uuid
+import warnings
 from pathlib import Path
-from typing import Any
+from typing import Any, Optional
 
 from ..errors import ConfigError
 
+try:  # POSIX; elsewhere the directory is not locked
+    import fcntl
+except ImportError:  # pragma: no cover - not on the platforms CI runs
+    fcntl = None  # type: ignore[assignment]
+
 MANIFEST = "manifest.json"
 CHUNKS = "chunks"
+LOCK = ".thermobear-study.lock"
 FORMAT = 1
 
 
@@ -23,76 +46,212 @@ def chunk_name(index: int) -> str:
     return f"chunk-{index:06d}.parquet"
 
 
-def _atomic_write(path: Path, write: Any) -> None:
-    """``write(tmp_path)``, then rename over ``path`` (same directory)."""
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+def record_name(index: int) -> str:
+    return f"chunk-{index:06d}.check.json"
+
+
+def file_sha256(path: Path) -> str:
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+class FolderLock:
+    """An exclusive advisory lock on ``root`` for one run (released by
+    ``release`` or when the process ends, however it ends)."""
+
+    def __init__(self, root: Path, run_id: str) -> None:
+        self.fd: Optional[int] = None
+        if fcntl is None:  # pragma: no cover
+            return
+        fd = os.open(root / LOCK, os.O_RDWR | os.O_CREAT, 0o644)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            holder = os.pread(fd, 4096, 0).decode("utf-8", "replace")
+            os.close(fd)
+            raise ConfigError(
+                f"invalid out = {str(root)!r}: another run is using it ({_holder(holder)}); "
+                "wait for it to finish or stop it, or use another directory"
+            ) from None
+        me = {"pid": os.getpid(), "host": socket.gethostname(), "run_id": run_id}
+        me["started"] = time.strftime("%Y-%m-%dT%H:%M:%S%z")
+        os.ftruncate(fd, 0)
+        os.pwrite(fd, json.dumps(me).encode(), 0)
+        self.fd = fd
+
+    def release(self) -> None:
+        if self.fd is not None and fcntl is not None:
+            fcntl.flock(self.fd, fcntl.LOCK_UN)
+            os.close(self.fd)
+            self.fd = None
+
+
+def _holder(text: str) -> str:
     try:
-        write(tmp)
-        os.replace(tmp, path)
-    finally:
-        if tmp.exists():
-            tmp.unlink()
+        h = json.loads(text)
+        return (
+            f"process {h['pid']} on host {h['host']}, run {h['run_id']}, "
+            f"started {h.get('started', '?')}"
+        )
+    except (ValueError, KeyError, TypeError):
+        return "a process that has not yet written its id"
 
 
 class Store:
-    """The output directory of one study (``manifest`` is what it holds)."""
+    """The output directory of one study (``manifest`` is what it holds),
+    locked for this run until ``close``."""
 
     def __init__(self, out: Any, manifest: dict, overwrite: bool = False) -> None:
         self.root = Path(out)
         self.manifest = manifest
         self.chunks = self.root / CHUNKS
+        self.run_id = f"{os.getpid()}-{uuid.uuid4().hex[:8]}"
+        try:
+            self.root.mkdir(parents=True, exist_ok=True)
+        except OSError as e:
+            raise ConfigError(f"invalid out = {str(self.root)!r}: {e}") from None
+        self.lock = FolderLock(self.root, self.run_id)
+        try:
+            if overwrite:
+                self._clear()
+            else:
+                self._check_existing()
+            self.chunks.mkdir(parents=True, exist_ok=True)
+            text = json.dumps(manifest, indent=1, sort_keys=True)
+            self._atomic_write(self.root / MANIFEST, lambda p: p.write_text(text))
+        except BaseException:
+            self.lock.release()
+            raise
+
+    def close(self) -> None:
+        """Release the directory (the lock) for another run."""
+        self.lock.release()
+
+    def _atomic_write(self, path: Path, write: Any) -> None:
+        """``write(tmp_path)``, then rename over ``path``; the temporary
+        file carries this run's id, and only this run removes it."""
+        tmp = path.with_name(f".{path.name}.{self.run_id}.tmp")
+        try:
+            write(tmp)
+            os.replace(tmp, path)
+        finally:
+            if tmp.exists():
+                tmp.unlink()
+
+    def _clear(self) -> None:
+        """Remove what a study keeps here (manifest, chunks, temporary
+        files), whatever state it is in; other files are left alone."""
+        for path in [self.root / MANIFEST, self.chunks, *self.root.glob(f".{MANIFEST}.*.tmp")]:
+            if path.is_dir() and not path.is_symlink():
+                shutil.rmtree(path)
+            elif path.exists() or path.is_symlink():
+                path.unlink()
+
+    def _check_existing(self) -> None:
         old = self._read_manifest()
-        if old is not None and old.get("grid_hash") != manifest["grid_hash"]:
-            if not overwrite:
-                raise ConfigError(
-                    f"invalid out = {str(self.root)!r}: it holds the results of another grid "
-                    f"(hash {str(old.get('grid_hash'))[:12]}, this one "
-                    f"{manifest['grid_hash'][:12]}); use another directory or overwrite=True"
-                )
-            shutil.rmtree(self.chunks, ignore_errors=True)
-        elif old is None and self.chunks.exists() and any(self.chunks.iterdir()):
+        again = "; use another directory or overwrite=True (--overwrite) to start it afresh"
+        if old is not None and old.get("grid_hash") != self.manifest["grid_hash"]:
             raise ConfigError(
-                f"invalid out = {str(self.root)!r}: {CHUNKS}/ exists without {MANIFEST}; "
-                "use another directory"
+                f"invalid out = {str(self.root)!r}: it holds the results of another grid "
+                f"(hash {str(old.get('grid_hash'))[:12]}, this one "
+                f"{self.manifest['grid_hash'][:12]}){again}"
             )
-        self.chunks.mkdir(parents=True, exist_ok=True)
-        for stale in self.chunks.glob(".*.tmp"):
-            stale.unlink()
-        _atomic_write(
-            self.root / MANIFEST,
-            lambda p: p.write_text(json.dumps(manifest, indent=1, sort_keys=True)),
-        )
+        if old is None and self.chunks.exists():
+            if not self.chunks.is_dir() or any(self.chunks.iterdir()):
+                raise ConfigError(
+                    f"invalid out = {str(self.root)!r}: {CHUNKS}/ exists without {MANIFEST}{again}"
+                )
 
     def _read_manifest(self) -> dict | None:
         path = self.root / MANIFEST
         if not path.exists():
             return None
         try:
-            return json.loads(path.read_text())
+            old = json.loads(path.read_text())
         except (OSError, ValueError) as e:
-            raise ConfigError(f"invalid {path} = unreadable manifest: {e}") from None
+            raise ConfigError(
+                f"invalid {path} = unreadable manifest ({e}); use overwrite=True "
+                "(--overwrite) to start the directory afresh"
+            ) from None
+        if not isinstance(old, dict):
+            raise ConfigError(
+                f"invalid {path} = not a study manifest; use overwrite=True (--overwrite)"
+            )
+        return old
 
-    def done(self) -> set[int]:
-        """Indices of the chunks already on disk."""
-        n = self.manifest["n_chunks"]
+    def _record(self, index: int, start: int, stop: int) -> dict:
+        return {
+            "grid_hash": self.manifest["grid_hash"],
+            "index": index,
+            "start": start,
+            "stop": stop,
+            "file": chunk_name(index),
+        }
+
+    def problem(self, index: int, start: int, stop: int) -> Optional[str]:
+        """Why the stored chunk ``index`` (points ``start..stop``) cannot be
+        reused, or None when it passes every check."""
+        try:
+            rec = json.loads((self.chunks / record_name(index)).read_text())
+        except FileNotFoundError:
+            return f"it has no check record {record_name(index)}"
+        except (OSError, ValueError) as e:
+            return f"its check record is unreadable ({e})"
+        if not isinstance(rec, dict):
+            return "its check record is not a record"
+        want = self._record(index, start, stop)
+        wrong = [k for k in want if rec.get(k) != want[k]]
+        if wrong:
+            return "its record is for " + ", ".join(f"{k} = {rec.get(k)!r}" for k in wrong)
+        if rec.get("sha256") != file_sha256(self.chunks / chunk_name(index)):
+            return "its content checksum does not match (changed, truncated or replaced)"
+        return None
+
+    def done(self, bounds: Any) -> set[int]:
+        """Indices of the stored chunks that pass their check
+        (``bounds(index)`` gives a chunk's point range); a stored chunk
+        that fails is reported with a warning and left to be recomputed."""
         found = set()
-        for p in self.chunks.glob("chunk-*.parquet"):
-            stem = p.name[len("chunk-") : -len(".parquet")]
-            if stem.isdigit() and int(stem) < n:
-                found.add(int(stem))
+        for index in range(self.manifest["n_chunks"]):
+            path = self.chunks / chunk_name(index)
+            if not path.exists():
+                continue
+            why = self.problem(index, *bounds(index))
+            if why is None:
+                found.add(index)
+            else:
+                warnings.warn(
+                    f"chunk file {path} fails its check: {why}; it is recomputed",
+                    UserWarning,
+                    stacklevel=3,
+                )
         return found
 
-    def write(self, index: int, frame: Any) -> None:
-        _atomic_write(self.chunks / chunk_name(index), lambda p: frame.write_parquet(p))
+    def write(self, index: int, frame: Any, start: int, stop: int) -> None:
+        path = self.chunks / chunk_name(index)
+        record = self._record(index, start, stop)
 
-    def read(self, index: int) -> Any:
+        def write_chunk(tmp: Path) -> None:
+            frame.write_parquet(tmp)
+            record["sha256"] = file_sha256(tmp)
+
+        self._atomic_write(path, write_chunk)
+        text = json.dumps(record, indent=1, sort_keys=True)
+        self._atomic_write(self.chunks / record_name(index), lambda p: p.write_text(text))
+
+    def read(self, index: int, columns: Optional[list[str]] = None) -> Any:
         import polars as pl
 
-        return pl.read_parquet(self.chunks / chunk_name(index))
+        path = self.chunks / chunk_name(index)
+        try:
+            return pl.read_parquet(path, columns=columns)
+        except Exception as e:  # checked before: only a change since then
+            raise ConfigError(f"invalid chunk file {path}: cannot be read ({e})") from None
 
     def failed(self, index: int) -> int:
         """Failed points of a stored chunk (reads its ``ok`` column only)."""
-        import polars as pl
-
-        ok = pl.read_parquet(self.chunks / chunk_name(index), columns=["ok"])["ok"]
+        ok = self.read(index, ["ok"])["ok"]
         return int(ok.len() - ok.sum())

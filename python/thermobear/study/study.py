@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any, Callable, Mapping, Optional
 
 from .. import _native
@@ -141,7 +140,13 @@ class Study:
         ``chunks/chunk-NNNNNN.parquet``, each chunk written as it finishes);
         a second run with the same grid computes only the missing chunks,
         another grid is refused unless ``overwrite``. Without ``out`` the
-        chunks stay in memory.
+        chunks stay in memory. A stored chunk is reused only when its check
+        record (grid hash, index, point range, SHA-256) matches; any other
+        is recomputed with a warning naming its file. One run owns ``out``
+        at a time (an advisory lock): a second is refused with a
+        ``ConfigError`` naming the first one's process. ``overwrite=True``
+        starts ``out`` afresh whatever it holds (an unreadable manifest,
+        stray or damaged chunks).
 
         ``engine``: None (this machine: rayon threads inside every chunk,
         ``threads`` of them, default all cores), a
@@ -159,19 +164,36 @@ class Study:
         computed and reused (also after an interrupt). ``collect=False``
         (with ``out``) keeps no chunk in memory and returns None: read the
         results with ``polars.scan_parquet(out / "chunks" / "*.parquet")``."""
-        t0 = time.perf_counter()
+        if not collect and out is None:
+            raise ConfigError("invalid collect = False: without out the results would be lost")
         store = Store(out, self.manifest(), overwrite) if out is not None else None
-        done = store.done() if store is not None else set()
+        try:
+            return self._run(store, engine, progress, threads, on_chunk, collect)
+        finally:
+            if store is not None:
+                store.close()
+
+    def _run(
+        self,
+        store: Optional[Store],
+        engine: Any,
+        progress: Optional[bool],
+        threads: Optional[int],
+        on_chunk: Optional[Callable[[int, Any], Any]],
+        collect: bool,
+    ) -> Any:
+        """[`run`][thermobear.Study.run] on an open (locked) store."""
+        t0 = time.perf_counter()
+        bounds = self._bounds
+        done = store.done(bounds) if store is not None else set()
         todo = [i for i in range(self.n_chunks) if i not in done]
         report = RunReport(
             self.n_points,
             self.n_chunks,
             reused=len(done),
-            out=None if out is None else str(Path(out)),
+            out=None if store is None else str(store.root),
         )
         self.report = report
-        if not collect and store is None:
-            raise ConfigError("invalid collect = False: without out the results would be lost")
         report.failed_points = sum(store.failed(i) for i in done) if store is not None else 0
         memory: dict[int, Any] = {}
         initial = sum(self._chunk_len(i) for i in done)
@@ -179,7 +201,7 @@ class Study:
 
         def on_done(index: int, frame: Any) -> None:
             if store is not None:
-                store.write(index, frame)
+                store.write(index, frame, *bounds(index))
             if collect:
                 memory[index] = frame
             report.computed += 1
@@ -202,8 +224,11 @@ class Study:
             report.seconds = time.perf_counter() - t0
         return self._collect(store, memory) if collect else None
 
+    def _bounds(self, index: int) -> tuple[int, int]:
+        return engines.chunk_bounds(self.n_points, self.chunk_size, index)
+
     def _chunk_len(self, index: int) -> int:
-        start, stop = engines.chunk_bounds(self.n_points, self.chunk_size, index)
+        start, stop = self._bounds(index)
         return stop - start
 
     def _execute(

@@ -13,16 +13,20 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Optional, Sequence
 
-from .. import _native
+from .. import _native, plausibility
+from .. import _validate as val
 from .._deprecation import renamed_kwargs
 from .._types import HeatModel, Lubrication, RacewayControl
 from ..bearing.ball_bearing import _effects_arg
+from ..errors import ConvergenceError
 from .state import (
     DEFAULT_SPIN_FRICTION_COEFFICIENT,
     _check_bearing_call,
     _heat_line,
     _HeatRows,
     _model_kwargs,
+    check_plausible,
+    operating_point,
 )
 
 
@@ -89,13 +93,21 @@ def isothermal_heat(
     args = (lubricant, lubrication_factor_f0, spin_friction_coefficient, *neutral, raceway_control,
             misalignment_rad, extra_heat_w, 1.0, churning_oil_fraction)  # fmt: skip
     options = _model_kwargs(*args, heat_model=heat_model, lubrication=lubrication, **heat)
-    raw = _native.isothermal_heat(
-        bearing._b,
-        float(speed_rpm),
-        float(0.0 if axial_n is None else axial_n),
-        float(0.0 if radial_n is None else radial_n),
-        float(oil_temperature_c),
-        _effects_arg(effects),
-        options,
-    )
+    point = operating_point(speed_rpm, axial_n, radial_n)
+    plausibility.check_misalignment(options["misalignment_rad"], plausibility._geometry(bearing))
+    oil_c = val.real("oil_temperature_c", oil_temperature_c, -273.15)
+    try:
+        raw = _native.isothermal_heat(
+            bearing._b,
+            point["speed_rpm"],
+            point["axial_n"],
+            point["radial_n"],
+            oil_c,
+            _effects_arg(effects),
+            options,
+        )
+    except ConvergenceError as e:
+        val.name_inputs(e, point)
+        raise
+    check_plausible(bearing, raw["solution"], point, options)
     return IsothermalHeat(raw)

@@ -19,14 +19,16 @@ from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 import numpy as np
 
-from .. import _native
+from .. import _native, plausibility
+from .. import _validate as val
 from .._deprecation import renamed_kwargs, warn_renamed
 from .._model_hook import takes_calibrated
 from .._names import BEARING_NODES, BEARING_SYMBOLS
 from .._types import HeatModel, Lubrication, RacewayControl
 from ..bearing.ball_bearing import Bearing, BearingSolution, _effects_arg, register_task
 from ..bearing.material import _native_material
-from ..errors import ConfigError
+from ..errors import ConfigError, ConvergenceError
+from .oil_supply import SUPPLY_OPTIONS, supply_dict
 
 if TYPE_CHECKING:
     import polars
@@ -223,6 +225,7 @@ HEAT_MODEL_OPTIONS = {
     "sliding_friction_ehl": None,
     "replenishment_krs": None,
     "seal_moment_n_m": 0.0,
+    **SUPPLY_OPTIONS,
 }
 
 #: Spin friction coefficient mu_s of the spin moment (3/8) mu_s Q a E: one
@@ -245,8 +248,8 @@ def seal_moment_option(heat: dict[str, Any]) -> dict[str, Any]:
     return heat
 
 
-def _opt_float(v: Any) -> Optional[float]:
-    return None if v is None else float(v)
+def _opt_float(value: Any, name: str = "argument", lo: float = -val.INF) -> Optional[float]:
+    return val.optional_real(name, value, lo)
 
 
 def _model_kwargs(
@@ -268,24 +271,54 @@ def _model_kwargs(
         if k not in HEAT_MODEL_OPTIONS:
             raise ConfigError(f"invalid argument = {k!r}: not a thermal or heat-model option")
     h = {**HEAT_MODEL_OPTIONS, **heat}
+    kelvin = -273.15
     return {
-        "lubricant": str(lubricant),
-        "lubrication_factor_f0": _opt_float(lubrication_factor_f0),
-        "spin_friction": float(spin_friction_coefficient),
-        "oil_air_temperature_c": float(oil_air_temperature_c),
-        "ambient_temperature_c": float(ambient_temperature_c),
+        "lubricant": val.text("lubricant", lubricant),
+        "lubrication_factor_f0": _opt_float(lubrication_factor_f0, "lubrication_factor_f0", 0),
+        "spin_friction": val.real("spin_friction_coefficient", spin_friction_coefficient, 0.0),
+        "oil_air_temperature_c": val.real("oil_air_temperature_c", oil_air_temperature_c, kelvin),
+        "ambient_temperature_c": val.real("ambient_temperature_c", ambient_temperature_c, kelvin),
         "housing_material": _native_material(housing_material),
-        "raceway_control": str(raceway_control),
-        "misalignment_rad": None if misalignment_rad is None else float(misalignment_rad),
-        "extra_heat_w": float(extra_heat_w),
-        "housing_conductance_scale": float(housing_conductance_scale),
-        "churning_oil_fraction": _opt_float(churning_oil_fraction),
-        "heat_model": str(h["heat_model"]),
-        "lubrication": None if h["lubrication"] is None else str(h["lubrication"]),
-        "skf_series": None if h["skf_series"] is None else str(h["skf_series"]),
-        "sliding_friction_ehl": _opt_float(h["sliding_friction_ehl"]),
-        "replenishment_krs": _opt_float(h["replenishment_krs"]),
-        "seal_moment_n_m": float(h["seal_moment_n_m"]),
+        "raceway_control": val.choice("raceway_control", raceway_control, ("outer", "inner")),
+        "misalignment_rad": _opt_float(misalignment_rad, "misalignment_rad"),
+        "extra_heat_w": val.real("extra_heat_w", extra_heat_w),
+        "housing_conductance_scale": val.real(
+            "housing_conductance_scale", housing_conductance_scale, 0.0
+        ),
+        "churning_oil_fraction": _opt_float(churning_oil_fraction, "churning_oil_fraction", 0),
+        "heat_model": val.choice("heat_model", h["heat_model"], ("palmgren", "skf")),
+        "lubrication": None
+        if h["lubrication"] is None
+        else val.choice("lubrication", h["lubrication"], LUBRICATIONS),
+        "skf_series": None if h["skf_series"] is None else val.text("skf_series", h["skf_series"]),
+        "sliding_friction_ehl": _opt_float(h["sliding_friction_ehl"], "sliding_friction_ehl", 0),
+        "replenishment_krs": _opt_float(h["replenishment_krs"], "replenishment_krs", 0),
+        "seal_moment_n_m": val.real("seal_moment_n_m", h["seal_moment_n_m"], 0.0),
+        "oil_supply": supply_dict(h),
+    }
+
+
+#: The lubrication methods (``Lubrication``).
+LUBRICATIONS = ("grease", "oil-air", "oil-mist", "jet", "oil-bath")
+
+
+def check_plausible(
+    bearing: Bearing, solution: Any, inputs: dict[str, Any], options: dict[str, Any]
+) -> None:
+    """The plausibility checks of a bearing's heat or thermal state: its
+    solved bearing state (``raw["solution"]``) with the lubrication
+    method's speed limit."""
+    plausibility.check_solution(
+        bearing, solution, inputs, options["misalignment_rad"], options["lubrication"]
+    )
+
+
+def operating_point(speed_rpm: Any, axial_n: Any, radial_n: Any) -> dict[str, float]:
+    """Speed and loads of a bearing call, checked (None load: 0)."""
+    return {
+        "speed_rpm": val.real("speed_rpm", speed_rpm, 0.0),
+        "axial_n": val.real("axial_n", 0.0 if axial_n is None else axial_n),
+        "radial_n": val.real("radial_n", 0.0 if radial_n is None else radial_n),
     }
 
 
@@ -374,14 +407,31 @@ def thermal_state(
             ambient_temperature_c, housing_material, raceway_control, misalignment_rad,
             extra_heat_w, housing_conductance_scale, churning_oil_fraction)  # fmt: skip
     options = _model_kwargs(*args, heat_model=heat_model, lubrication=lubrication, **heat)
-    loads = (
-        float(0.0 if axial_n is None else axial_n),
-        float(0.0 if radial_n is None else radial_n),
-    )
-    raw = _native.thermal_state(
-        bearing._b, float(speed_rpm), *loads, _effects_arg(effects), options
-    )
-    return ThermalState(raw)
+    return ThermalState(_checked_state(bearing, speed_rpm, axial_n, radial_n, effects, options))
+
+
+def _checked_state(
+    bearing: Bearing, speed_rpm: Any, axial_n: Any, radial_n: Any, effects: Any, options: Any
+) -> dict[str, Any]:
+    """The native thermal state with the operating point checked before and
+    the plausibility of the state after; a convergence failure names the
+    operating point."""
+    point = operating_point(speed_rpm, axial_n, radial_n)
+    plausibility.check_misalignment(options["misalignment_rad"], plausibility._geometry(bearing))
+    try:
+        raw = _native.thermal_state(
+            bearing._b,
+            point["speed_rpm"],
+            point["axial_n"],
+            point["radial_n"],
+            _effects_arg(effects),
+            options,
+        )
+    except ConvergenceError as e:
+        val.name_inputs(e, point)
+        raise
+    check_plausible(bearing, raw["solution"], point, options)
+    return dict(raw)
 
 
 def _dispatch(machine: Any, speed_rpm: float, given: dict[str, Any], kwargs: dict[str, Any]) -> Any:

@@ -12,7 +12,8 @@ from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .. import _native
+from .. import _native, plausibility
+from .. import _validate as val
 from .._deprecation import renamed_kwargs
 from .._model_hook import takes_calibrated
 from .._names import renamed_columns
@@ -83,10 +84,9 @@ def stiffness_curve(
     [`CalibratedModel`][thermobear.CalibratedModel] stands for its bearing
     (its thermal options act in the thermal mode only).
     """
-    if mode not in ("speed", "constant", "thermal"):
-        raise ConfigError(f'invalid mode = {mode!r}: must be "speed", "constant" or "thermal"')
+    val.choice("mode", mode, ("speed", "constant", "thermal"))
     if mode == "thermal":
-        if moment_n_m != 0.0:
+        if val.real("moment_n_m", moment_n_m) != 0.0:
             raise ConfigError(
                 f"invalid moment_n_m = {moment_n_m}: "
                 "the thermal mode takes axial and radial loads only"
@@ -110,7 +110,11 @@ def stiffness_curve(
     return _mechanical_stiffness_curve(
         bearing,
         speeds_rpm,
-        (float(axial_n), float(radial_n), float(moment_n_m)),
+        (
+            val.real("axial_n", axial_n),
+            val.real("radial_n", radial_n),
+            val.real("moment_n_m", moment_n_m),
+        ),
         mode,
         effects,
         raceway_control,
@@ -134,10 +138,10 @@ def _mechanical_stiffness_curve(
     that fails keeps the finished rows on the error."""
     import polars as pl
 
-    speeds = np.ascontiguousarray(np.asarray(speeds_rpm, dtype=float).ravel())
-    if speeds.size == 0:
-        raise ConfigError("invalid speeds_rpm = []: give at least one speed")
+    speeds = val.reals("speeds_rpm", speeds_rpm, 0.0)  # checked before "constant" drops them
     native_speeds = np.zeros_like(speeds) if mode == "constant" else speeds
+    tilt = bearing._tilt(misalignment_rad)
+    plausibility.check_speeds(speeds, bearing._pitch_mm(), None)
 
     def frame(cols: Any, at: Any) -> polars.DataFrame:
         df = pl.DataFrame(renamed_columns(dict(cols)))
@@ -150,14 +154,38 @@ def _mechanical_stiffness_curve(
             native_speeds,
             *loads,
             _effects_arg(effects),
-            raceway_control,
-            None if misalignment_rad is None else float(misalignment_rad),
+            val.choice("raceway_control", raceway_control, ("outer", "inner")),
+            tilt,
             progress,
         )
     except ThermobearError as e:
         speed_frames(e, speeds, frame)
         raise
+    _refuse_past_the_groove(bearing, cols, native_speeds, loads, (effects, raceway_control, tilt))
     return frame(cols, speeds)
+
+
+def _refuse_past_the_groove(
+    bearing: Bearing,
+    cols: Any,
+    speeds: np.ndarray,
+    loads: tuple[float, float, float],
+    options: tuple[Any, ...],
+) -> None:
+    """The contact check of ``solve`` on every row of a curve: a
+    [`ConfigError`][thermobear.ConfigError] for the first speed whose
+    contact reaches past the groove (``plausibility.rows_past_the_groove``)."""
+    n = len(speeds)
+    points = {
+        k: np.full(n, x) for k, x in zip(("axial_n", "radial_n", "moment_n_m"), loads, strict=True)
+    }
+    keys = ("effects", "raceway_control", "misalignment_rad")
+    past = plausibility.rows_past_the_groove(
+        bearing, cols, {**points, "speed_rpm": speeds}, dict(zip(keys, options, strict=True))
+    )
+    if past:
+        i = min(past)
+        raise ConfigError(f"{past[i]} (speeds_rpm[{i}] of the curve)")
 
 
 @renamed_kwargs(spin_friction="spin_friction_coefficient")
@@ -194,9 +222,7 @@ def thermal_stiffness_curve(
     ``sliding_friction_ehl``, ``replenishment_krs``, ``seal_moment_n_m``)."""
     import polars as pl
 
-    speeds = np.ascontiguousarray(np.asarray(speeds_rpm, dtype=float).ravel())
-    if speeds.size == 0:
-        raise ConfigError("invalid speeds_rpm = []: give at least one speed")
+    speeds = val.reals("speeds_rpm", speeds_rpm, 0.0)
     settings = _model_kwargs(
         lubricant,
         lubrication_factor_f0,
@@ -211,6 +237,8 @@ def thermal_stiffness_curve(
         churning_oil_fraction,
         **heat,
     )
+    plausibility.check_misalignment(settings["misalignment_rad"], plausibility._geometry(bearing))
+    plausibility.check_speeds(speeds, bearing._pitch_mm(), settings["lubrication"])
 
     def frame(cols: Any, at: Any) -> polars.DataFrame:
         df = pl.DataFrame(renamed_columns(dict(cols)))
@@ -221,8 +249,8 @@ def thermal_stiffness_curve(
         cols = _native.thermal_stiffness_curve(
             bearing._b,
             speeds,
-            float(axial_n),
-            float(radial_n),
+            val.real("axial_n", axial_n),
+            val.real("radial_n", radial_n),
             _effects_arg(effects),
             settings,
             progress=progress,

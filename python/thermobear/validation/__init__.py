@@ -17,7 +17,11 @@ the points and the error reported on the points held out.
 * ``skf_reference_speed_62`` -- SKF catalogue reference speeds of 27
   deep-groove bearings as a heat balance under the ISO 15312 reference
   conditions: which heat model reproduces the published friction heat?
-  (``thermobear.validation.reference_speed``).
+  (``thermobear.validation.reference_speed``);
+* ``skf_reference_speed_60``, ``skf_reference_speed_63`` -- the same
+  catalogue's 60 and 63 series, references the heat model was not tuned to:
+  every candidate keeps its value calibrated on the 62 series, every bearing
+  is held out.
 
 [`validate`][thermobear.validate] runs them and writes the report
 (``thermobear.validation.report``).
@@ -42,6 +46,9 @@ def run_set(name: str) -> SetResult:
     from .vibration import run_vibration
 
     data = load_set(name)
+    other = data.get("calibration", {}).get("calibration_set")
+    if data["kind"] == "reference_speed" and other:
+        return run_reference_speed(data, load_set(str(other)))
     runner = {
         "spindle": run_spindle,
         "spindle_vibration": run_vibration,

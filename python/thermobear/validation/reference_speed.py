@@ -36,6 +36,14 @@ if TYPE_CHECKING:
     import polars
 
 
+#: The calibrated scale of the catalogue's oil-bath drag (its V_M at the ISO
+#: reference level over the model's default): a validation parameter, applied
+#: to the model's drag by the evaluator (``_Evaluator.heat``).
+BATH_DRAG_SCALE = "bath_drag_scale"
+#: Oil-supply keywords a candidate may set (dropped for the heat without drag).
+SUPPLY_KEYS = ("oil_level_mm",)
+
+
 def reference_heat_flow_w(bore_mm: float, outer_diameter_mm: float, width_mm: float) -> float:
     """ISO 15312 reference heat flow Phi_r = q_r A_r [W] of a radial bearing
     (module doc)."""
@@ -77,6 +85,15 @@ class HeatCandidate:
     parameter: str = ""
     bounds: tuple = (0.0, 0.0)
     description: str = ""
+    iso_oil_level: bool = False  # oil_level_mm: the ISO 15312 level, mid lowest ball
+
+    def options_for(self, bearing: Bearing) -> dict:
+        """The options of this candidate for one ``bearing``: with
+        ``iso_oil_level``, ``oil_level_mm`` = half its ball diameter (oil up to
+        the middle of the lowest ball, measured from its lowest point)."""
+        if not self.iso_oil_level:
+            return dict(self.options)
+        return {**self.options, "oil_level_mm": 0.5 * bearing.geometry["ball_diameter_mm"]}
 
     @property
     def k(self) -> int:
@@ -92,7 +109,7 @@ def heat_candidates(lubrication: Lubrication) -> list[HeatCandidate]:
     f0b, xb = lub["f0_bounds"], (0.0, lub["oil_fraction_bounds"][1])
     base = {"lubrication": lubrication}
     return [
-        HeatCandidate("baseline", base, description="Palmgren, the method's f0 and ball drag"),
+        HeatCandidate("baseline", base, description="Palmgren, the method's f0 and drag"),
         HeatCandidate(
             "palmgren_f0",
             {**base, "churning_oil_fraction": 0.0},
@@ -119,11 +136,26 @@ def heat_candidates(lubrication: Lubrication) -> list[HeatCandidate]:
             xb,
             "SKF-style four-term moment, ball-drag oil fraction calibrated",
         ),
+        HeatCandidate(
+            "skf_bath",
+            {**base, "heat_model": "skf"},
+            description="SKF-style moment with the catalogue's oil-bath drag V_M dm^5 n^2 "
+            "at the ISO level, V_M as shipped",
+            iso_oil_level=True,
+        ),
+        HeatCandidate(
+            "skf_bath_fit",
+            {**base, "heat_model": "skf"},
+            BATH_DRAG_SCALE,
+            (0.0, 5.0),
+            "SKF-style moment with the oil-bath drag, its V_M scale calibrated",
+            iso_oil_level=True,
+        ),
     ]
 
 
 def reference_points(data: dict) -> polars.DataFrame:
-    """One row per bearing: ``bearing``, ``speed_rpm`` (the reference
+    """One row per bearing: ``bearing``, ``pitch_diameter_mm``, ``speed_rpm`` (the reference
     speed), ``radial_n`` (the reference load), ``quantity``
     (``reference_heat_w``), ``value`` (Phi_r), ``sigma``, ``label``."""
     import polars as pl
@@ -136,6 +168,7 @@ def reference_points(data: dict) -> polars.DataFrame:
         rows.append(
             {
                 "bearing": b["name"],
+                "pitch_diameter_mm": 0.5 * (float(b["bore_mm"]) + float(b["outer_diameter_mm"])),
                 "speed_rpm": float(b["reference_speed_rpm"]),
                 "radial_n": frac * 1e3 * float(b["static_load_rating_kn"]),
                 "quantity": "reference_heat_w",
@@ -174,26 +207,39 @@ class _Evaluator:
         self.pts = pts
         self._cache: dict = {}
 
-    def heat(self, cand: HeatCandidate, value: float | None, rows: np.ndarray) -> np.ndarray:
+    def _total(self, bearing: str, p: dict, options: dict) -> float:
         from ..thermal import isothermal_heat
 
-        opts = dict(cand.options)
-        if cand.parameter:
-            if value is None:
-                raise ConfigError(
-                    f"invalid value = None: the candidate {cand.name} calibrates {cand.parameter}"
-                )
-            opts[cand.parameter] = float(value)
+        key = (bearing, tuple(sorted(options.items())))
+        if key not in self._cache:
+            self._cache[key] = isothermal_heat(
+                self.bearings[bearing], p["speed_rpm"], 0.0, p["radial_n"],
+                oil_temperature_c=self.oil_c, lubricant=self.lubricant, **options,
+            ).total_heat_w  # fmt: skip
+        return self._cache[key]
+
+    def heat(self, cand: HeatCandidate, value: float | None, rows: np.ndarray) -> np.ndarray:
+        """Model heat [W] of the ``rows`` for ``cand`` with its parameter at
+        ``value``. The parameter ``BATH_DRAG_SCALE`` is no model keyword: it
+        scales the candidate's oil-bath drag, the heat with the drag minus the
+        heat with none (the drag is linear in the catalogue's V_M)."""
+        if cand.parameter and value is None:
+            raise ConfigError(
+                f"invalid value = None: the candidate {cand.name} calibrates {cand.parameter}"
+            )
+        scale = cand.parameter == BATH_DRAG_SCALE
+        v = 0.0 if value is None else float(value)
+        extra = {cand.parameter: v} if cand.parameter and not scale else {}
         out = np.empty(len(rows))
         for j, i in enumerate(rows):
             p = self.pts.row(int(i), named=True)
-            key = (cand.name, value, p["bearing"])
-            if key not in self._cache:
-                self._cache[key] = isothermal_heat(
-                    self.bearings[p["bearing"]], p["speed_rpm"], 0.0, p["radial_n"],
-                    oil_temperature_c=self.oil_c, lubricant=self.lubricant, **opts,
-                ).total_heat_w  # fmt: skip
-            out[j] = self._cache[key]
+            opts = {**cand.options_for(self.bearings[p["bearing"]]), **extra}
+            total = self._total(p["bearing"], p, opts)
+            if scale:
+                dry = {k: v for k, v in opts.items() if k not in SUPPLY_KEYS}
+                bare = self._total(p["bearing"], p, {**dry, "churning_oil_fraction": 0.0})
+                total = bare + v * (total - bare)
+            out[j] = total
         return out
 
 
@@ -215,15 +261,19 @@ def _fit(ev: _Evaluator, cand: HeatCandidate, cal: np.ndarray) -> tuple[float | 
     return float(r.x), chi2(float(r.x))
 
 
-def _candidate_rows(ev: _Evaluator, cands: list, cal: np.ndarray) -> list[dict]:
-    """Fit every candidate on the calibration rows and score it on all."""
+def _candidate_rows(
+    cal_ev: _Evaluator, ev: _Evaluator, cands: list, cal: np.ndarray, held: np.ndarray
+) -> list[dict]:
+    """Fit every candidate on the calibration rows ``cal`` of ``cal_ev`` (this set's
+    evaluator, or the calibration set's) and score it on the rows ``held`` of ``ev``."""
     y, s = ev.pts["value"].to_numpy(), ev.pts["sigma"].to_numpy()
+    dm = ev.pts["pitch_diameter_mm"].to_numpy()[held]
     every = np.arange(len(y))
     rows = []
     for c in cands:
-        v, chi2 = _fit(ev, c, cal)
+        v, chi2 = _fit(cal_ev, c, cal)
         z = (ev.heat(c, v, every) - y) / s
-        held = z[~cal]
+        h = z[held]
         span = c.bounds[1] - c.bounds[0]
         at_bound = bool(c.parameter) and min(abs(v - b) for b in c.bounds) <= 1e-3 * span
         rows.append(
@@ -235,8 +285,9 @@ def _candidate_rows(ev: _Evaluator, cands: list, cal: np.ndarray) -> list[dict]:
                 "chi2_calibration": chi2,
                 "aic": chi2 + 2.0 * c.k,
                 "at_bound": at_bound,
-                "heldout_rms_sigma": float(np.sqrt(np.mean(held**2))),
-                "heldout_max_sigma": float(np.abs(held).max()),
+                "heldout_rms_sigma": float(np.sqrt(np.mean(h**2))),
+                "heldout_max_sigma": float(np.abs(h).max()),
+                "heldout_size_correlation": float(np.corrcoef(dm, h)[0, 1]),
                 "_value": v,
                 "_cand": c,
             }
@@ -244,26 +295,58 @@ def _candidate_rows(ev: _Evaluator, cands: list, cal: np.ndarray) -> list[dict]:
     return rows
 
 
-def run_reference_speed(data: dict) -> SetResult:
+def _calibration_side(
+    data: dict, ev: _Evaluator, cal_data: dict | None
+) -> tuple[_Evaluator, np.ndarray, np.ndarray, str]:
+    """Where the candidates are calibrated: on ``[calibration] calibrate_on`` of
+    this set (the other bearings held out), or, with ``calibration_set``, on
+    those bearings of that shipped set (every bearing of this set held out: a
+    reference the model was not tuned to). Returns the calibration evaluator,
+    its calibration rows, this set's held-out rows and the hold-out statement.
+    ``cal_data``: the set named by ``calibration_set``, loaded by the caller."""
+    cal_spec = data["calibration"]
+    names = ", ".join(cal_spec["calibrate_on"])
+    other = cal_spec.get("calibration_set")
+    if not other:
+        cal = np.isin(ev.pts["bearing"].to_numpy(), cal_spec["calibrate_on"])
+        text = f"candidates calibrated on {names}; held out: the other {int((~cal).sum())} bearings"
+        return ev, cal, ~cal, text
+    if cal_data is None or cal_data.get("name") != other:
+        raise ConfigError(f"invalid calibration_set = {other!r}: its data were not given")
+    cal_ev = _Evaluator(cal_data, reference_points(cal_data))
+    cal = np.isin(cal_ev.pts["bearing"].to_numpy(), cal_spec["calibrate_on"])
+    if not cal.any():
+        raise ConfigError(f"invalid calibrate_on = {cal_spec['calibrate_on']!r}: not in {other}")
+    held = np.ones(ev.pts.height, dtype=bool)
+    text = (
+        f"candidates calibrated on {names} of {other}; no value calibrated on this set: "
+        f"all {ev.pts.height} bearings held out"
+    )
+    return cal_ev, cal, held, text
+
+
+def run_reference_speed(data: dict, cal_data: dict | None = None) -> SetResult:
     """Validate a reference-speed set (module doc): the baseline, every
-    candidate calibrated on ``[calibration] calibrate_on``, the one with the
-    lowest AIC there (a candidate stuck at a bound is no choice) checked on
-    the held-out bearings."""
+    candidate calibrated on ``[calibration] calibrate_on`` (of this set, or of
+    the set named by ``calibration_set``, whose data ``cal_data`` the caller
+    loads), the one with the lowest AIC there
+    (a candidate stuck at a bound is no choice) checked on the held-out
+    bearings."""
     import polars as pl
 
     t0 = time.perf_counter()
     pts = reference_points(data)
-    cal = np.isin(pts["bearing"].to_numpy(), data["calibration"]["calibrate_on"])
     ev = _Evaluator(data, pts)
+    cal_ev, cal, held, holdout = _calibration_side(data, ev, cal_data)
     cands = heat_candidates(data["conditions"]["lubrication"])
-    rows = _candidate_rows(ev, cands, cal)
+    rows = _candidate_rows(cal_ev, ev, cands, cal, held)
     free = [r for r in rows if not r["at_bound"]] or rows
     best = min(free, key=lambda r: r["aic"])
     every = np.arange(pts.height)
     frame = pts.with_columns(
         pl.Series("model_before", ev.heat(cands[0], None, every)),
         pl.Series("model_after", ev.heat(best["_cand"], best["_value"], every)),
-        pl.Series("heldout", ~cal),
+        pl.Series("heldout", held),
     )
     table = pl.DataFrame([{k: v for k, v in r.items() if not k.startswith("_")} for r in rows])
     c = best["_cand"]
@@ -276,10 +359,9 @@ def run_reference_speed(data: dict) -> SetResult:
         data["title"],
         data["source"]["citation"],
         frame,
-        _verdict(frame, best, ev.oil_c),
+        _verdict(frame, best, ev.oil_c, data["calibration"].get("calibration_set", "")),
         calibrated,
-        holdout=f"candidates calibrated on {', '.join(data['calibration']['calibrate_on'])}; "
-        f"held out: the other {int((~cal).sum())} bearings",
+        holdout=holdout,
         tables={"heat-model candidates": table},
     )
     res.notes += _notes(frame)
@@ -294,13 +376,15 @@ def _ratio_range(frame: polars.DataFrame, col: str) -> str:
     return f"{r.min():.2f}-{r.max():.2f} x"
 
 
-def _verdict(frame: polars.DataFrame, best: dict, oil_c: float) -> str:
+def _verdict(frame: polars.DataFrame, best: dict, oil_c: float, other: str = "") -> str:
     v = best["_value"]
+    where = f" of {other}" if other else ""
     par = f" with {best['parameter']} = {v:.3g}" if v is not None else ""
     before, after = _ratio_range(frame, "model_before"), _ratio_range(frame, "model_after")
     return (
-        f"baseline (Palmgren, oil-bath f0 and ball drag) gives {before} the catalogue heat; "
-        f"the lowest-AIC candidate on the calibration bearings is '{best['candidate']}'{par} "
+        f"baseline (Palmgren, oil-bath f0 and bath drag) gives {before} the catalogue heat; "
+        f"the lowest-AIC candidate on the calibration bearings{where} is "
+        f"'{best['candidate']}'{par} "
         f"({best['description']}): {after} (ISO VG 32 at {oil_c:.1f} C = 12 mm^2/s)"
     )
 
@@ -317,19 +401,31 @@ def _notes(frame: polars.DataFrame) -> list[str]:
     ]
 
 
+def size_correlation(frame: polars.DataFrame) -> float:
+    """Correlation of the held-out residual (``model_after - value``) / sigma with the
+    pitch diameter (d + D)/2 of the bearings: near -1 when the calibrated model's
+    error falls steadily with bearing size. ``frame``: a reference-speed
+    result's ``points``."""
+    held = frame.filter(frame["heldout"])
+    z = ((held["model_after"] - held["value"]) / held["sigma"]).to_numpy()
+    return float(np.corrcoef(held["pitch_diameter_mm"].to_numpy(), z)[0, 1])
+
+
 def _missing(frame: polars.DataFrame, data: dict) -> str:
     held = frame.filter(frame["heldout"])
     z = ((held["model_after"] - held["value"]) / held["sigma"]).to_numpy()
     bad = np.abs(z) > 2.0
-    rows = {b["name"]: b for b in data["bearings"]}
-    dm = np.array(
-        [0.5 * (rows[n]["bore_mm"] + rows[n]["outer_diameter_mm"]) for n in held["bearing"]]
-    )
-    r = float(np.corrcoef(dm, z)[0, 1])
+    if not bad.any():
+        return "a calibrated value lies outside its bounds"
+    r = size_correlation(frame)
     trend = (
         f"; the residual {'falls' if r < 0 else 'grows'} with bearing size (correlation {r:.2f} "
         "with the pitch diameter), so the missing term scales with size unlike the candidates'"
         if abs(r) > 0.7
+        else f"; all {'above' if z[bad].min() > 0 else 'below'} it with no size trend (correlation "
+        f"{r:.2f}): an offset of the whole set, as from a coefficient that differs for its "
+        "bearings"
+        if (z[bad] > 0).all() or (z[bad] < 0).all()
         else ""
     )
     names = ", ".join(held.filter(bad)["bearing"].to_list())
