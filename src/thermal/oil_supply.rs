@@ -99,7 +99,7 @@ pub enum OilSupply {
     },
     /// Oil bath.
     OilBath {
-        /// Static oil level above the lowest point of the lowest ball [mm];
+        /// Static oil level above the lowest point of the lowest ball \[mm\];
         /// None: the middle of the lowest ball (ISO 15312 reference level).
         oil_level_mm: Option<f64>,
     },
@@ -260,7 +260,7 @@ pub struct SupplyInput {
     pub oil_volume_cm3_per_h: Option<f64>,
     /// Oil-air, oil-mist: carrier air flow [l/min] (default 0: not given).
     pub air_flow_l_per_min: Option<f64>,
-    /// Oil bath: static oil level above the lowest point of the lowest ball [mm].
+    /// Oil bath: static oil level above the lowest point of the lowest ball \[mm\].
     pub oil_level_mm: Option<f64>,
     /// Grease: fill fraction of the free volume (default 0.3).
     pub grease_fill_fraction: Option<f64>,
@@ -376,7 +376,7 @@ impl SupplyInput {
 }
 
 /// Speed about which a speed exponent other than Parker's tilts the cavity
-/// fraction [rpm] (eq. 9.10): the fraction there is Parker's whatever the
+/// fraction \[rpm\] (eq. 9.10): the fraction there is Parker's whatever the
 /// exponent, so the exponent changes how fast the oil leaves the cavity
 /// with speed, not how much oil there is (the flow scale's job). Our
 /// choice: a round speed inside the range the correlation is used at
