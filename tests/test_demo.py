@@ -14,7 +14,10 @@ def test_demo_quick_writes_tables_and_figures(tmp_path, capsys):
     pngs = list(tmp_path.rglob("*.png"))
     parquets = list(tmp_path.rglob("*.parquet"))
     csvs = list(tmp_path.rglob("*.csv"))
-    assert pngs and parquets and len(csvs) >= len(parquets)
+    assert pngs and parquets and csvs
+    # Every table has a CSV beside it, except the large Poincare point sets.
+    for p in parquets:
+        assert p.with_suffix(".csv").exists() or p.stem.startswith("poincare_"), p
     for p in parquets:
         df = pl.read_parquet(p)
         assert df.height > 0

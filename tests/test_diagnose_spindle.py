@@ -185,7 +185,7 @@ def test_seed_b_study_quick(tmp_path):
     # runout of the vibrometer's track: 18.92 mm/s RMS at 18,000 rpm is
     # omega eps / sqrt 2 with eps = 14.2 um (inside its 0-50 um bounds)
     assert vib["measured_over_ours_without"][0] > 100.0
-    assert "runout_um" in text and "14.2 um" in text
+    assert "runout_um" in text and "14.2 µm" in text
     assert "unbalance_grade" not in text.split("held-out")[0].split("look-alikes")[0]
 
 
