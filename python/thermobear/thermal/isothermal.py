@@ -13,19 +13,17 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Optional, Sequence
 
-from .. import _native, plausibility
+from .. import _native
 from .. import _validate as val
 from .._deprecation import renamed_kwargs
 from .._types import HeatModel, Lubrication, RacewayControl
-from ..bearing.ball_bearing import _effects_arg
-from ..errors import ConvergenceError
 from .state import (
     DEFAULT_SPIN_FRICTION_COEFFICIENT,
     _check_bearing_call,
     _heat_line,
     _HeatRows,
     _model_kwargs,
-    check_plausible,
+    checked_native,
     operating_point,
 )
 
@@ -94,20 +92,6 @@ def isothermal_heat(
             misalignment_rad, extra_heat_w, 1.0, churning_oil_fraction)  # fmt: skip
     options = _model_kwargs(*args, heat_model=heat_model, lubrication=lubrication, **heat)
     point = operating_point(speed_rpm, axial_n, radial_n)
-    plausibility.check_misalignment(options["misalignment_rad"], plausibility._geometry(bearing))
     oil_c = val.real("oil_temperature_c", oil_temperature_c, -273.15)
-    try:
-        raw = _native.isothermal_heat(
-            bearing._b,
-            point["speed_rpm"],
-            point["axial_n"],
-            point["radial_n"],
-            oil_c,
-            _effects_arg(effects),
-            options,
-        )
-    except ConvergenceError as e:
-        val.name_inputs(e, point)
-        raise
-    check_plausible(bearing, raw["solution"], point, options)
+    raw = checked_native(_native.isothermal_heat, bearing, point, (oil_c,), effects, options)
     return IsothermalHeat(raw)

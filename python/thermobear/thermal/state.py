@@ -417,21 +417,30 @@ def _checked_state(
     the plausibility of the state after; a convergence failure names the
     operating point."""
     point = operating_point(speed_rpm, axial_n, radial_n)
+    return dict(checked_native(_native.thermal_state, bearing, point, (), effects, options))
+
+
+def checked_native(
+    fn: Any,
+    bearing: Bearing,
+    point: dict[str, float],
+    extra: tuple[float, ...],
+    effects: Any,
+    options: Any,
+) -> Any:
+    """``fn(bearing, speed, axial, radial, *extra, effects, options)`` (a
+    native single-bearing heat call) with the misalignment checked before,
+    the plausibility of the solved state after, and a convergence failure
+    naming the operating point."""
     plausibility.check_misalignment(options["misalignment_rad"], plausibility._geometry(bearing))
     try:
-        raw = _native.thermal_state(
-            bearing._b,
-            point["speed_rpm"],
-            point["axial_n"],
-            point["radial_n"],
-            _effects_arg(effects),
-            options,
-        )
+        raw = fn(bearing._b, point["speed_rpm"], point["axial_n"], point["radial_n"], *extra,
+                 _effects_arg(effects), options)  # fmt: skip
     except ConvergenceError as e:
         val.name_inputs(e, point)
         raise
     check_plausible(bearing, raw["solution"], point, options)
-    return dict(raw)
+    return raw
 
 
 def _dispatch(machine: Any, speed_rpm: float, given: dict[str, Any], kwargs: dict[str, Any]) -> Any:
