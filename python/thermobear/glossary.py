@@ -544,6 +544,19 @@ UNIT_SUFFIXES: tuple[str, ...] = (
 )
 
 
+#: The unit each suffix token stands for (a name the glossary does not
+#: hold takes its unit from its suffix).
+SUFFIX_UNITS: dict[str, str] = {
+    "_w_per_m2_k": "W/(m^2 K)", "_cm3_per_min": "cm^3/min", "_cm3_per_h": "cm^3/h",
+    "_l_per_min": "l/min", "_m_per_s": "m/s", "_n_m_per_rad": "N m/rad", "_mm_rpm": "mm rpm",
+    "_mpa": "MPa", "_n_per_rad": "N/rad", "_n_per_um": "N/um", "_n_per_m": "N/m",
+    "_mm_s": "mm/s", "_n_m": "N m", "_cst": "mm^2/s", "_rpm": "rpm", "_deg": "deg",
+    "_rad": "rad", "_hz": "Hz", "_mm": "mm", "_um": "um", "_n": "N", "_m": "m", "_c": "C",
+    "_k": "K", "_w": "W", "_s": "s",
+}  # fmt: skip
+assert set(SUFFIX_UNITS) == set(UNIT_SUFFIXES)
+
+
 def glossary() -> polars.DataFrame:
     """The glossary as a DataFrame: ``name``, ``unit``, ``symbol``,
     ``description``, one row per quantity."""
@@ -567,4 +580,4 @@ def unit_of(name: str) -> str:
         raise KeyError(f"{name!r} is not in the glossary (thermobear.glossary)") from None
 
 
-__all__ = ["GLOSSARY", "UNIT_SUFFIXES", "Entry", "glossary", "unit_of"]
+__all__ = ["GLOSSARY", "SUFFIX_UNITS", "UNIT_SUFFIXES", "Entry", "glossary", "unit_of"]

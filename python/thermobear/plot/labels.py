@@ -5,7 +5,7 @@ so that no figure shows a column name such as ``radial_stiffness_n_per_m``."""
 
 from __future__ import annotations
 
-from ..glossary import GLOSSARY, UNIT_SUFFIXES
+from ..glossary import GLOSSARY, SUFFIX_UNITS, UNIT_SUFFIXES
 
 __all__ = ["axis_label", "human_name", "unit_text"]
 
@@ -17,29 +17,6 @@ _UNIT_TEXT = {
     "mm^2/s": "mm²/s",
     "N/um": "N/µm",
     "1": "",
-}
-
-#: The unit of a name's suffix, for a name the glossary does not hold.
-_SUFFIX_UNITS = {
-    "_n_m_per_rad": "N m/rad",
-    "_n_per_rad": "N/rad",
-    "_n_per_um": "N/um",
-    "_n_per_m": "N/m",
-    "_mm_s": "mm/s",
-    "_n_m": "N m",
-    "_cst": "mm^2/s",
-    "_rpm": "rpm",
-    "_deg": "deg",
-    "_rad": "rad",
-    "_hz": "Hz",
-    "_mm": "mm",
-    "_um": "um",
-    "_n": "N",
-    "_m": "m",
-    "_c": "C",
-    "_k": "K",
-    "_w": "W",
-    "_s": "s",
 }
 
 #: Short figure names where the glossary's description is long or reads
@@ -123,7 +100,7 @@ def name_unit(name: str) -> str:
     entry = GLOSSARY.get(name)
     if entry is not None:
         return unit_text(entry.unit)
-    return unit_text(_SUFFIX_UNITS.get(split_unit(name)[1], "1"))
+    return unit_text(SUFFIX_UNITS.get(split_unit(name)[1], "1"))
 
 
 def axis_label(name: str, unit: str | None = None) -> str:

@@ -10,7 +10,7 @@ import numpy as np
 
 from .. import _validate
 from ..errors import ConfigError
-from ..glossary import GLOSSARY, UNIT_SUFFIXES
+from ..glossary import GLOSSARY, SUFFIX_UNITS, UNIT_SUFFIXES
 
 if TYPE_CHECKING:
     import polars
@@ -22,14 +22,6 @@ WHATS: tuple[str, ...] = ("measured", "stiffness", "temperatures", "growth", "vi
 #: The quantities of "growth": thermal growth and bearing displacements.
 _GROWTH = ("axial_growth_um", "axial_displacement_um", "radial_displacement_um")
 
-#: The unit of a name by its suffix, for quantities the glossary lacks.
-_SUFFIX_UNITS = {
-    "_n_m_per_rad": "N m/rad", "_n_per_rad": "N/rad", "_n_per_um": "N/um", "_n_per_m": "N/m",
-    "_mm_s": "mm/s", "_n_m": "N m", "_cst": "mm^2/s", "_rpm": "rpm", "_deg": "deg",
-    "_rad": "rad", "_hz": "Hz", "_mm": "mm", "_um": "um", "_n": "N", "_m": "m", "_c": "C",
-    "_k": "K", "_w": "W", "_s": "s",
-}  # fmt: skip
-
 
 def unit_of_quantity(name: str) -> str:
     """The unit of a quantity: the glossary's, else that of its suffix
@@ -38,7 +30,7 @@ def unit_of_quantity(name: str) -> str:
         return GLOSSARY[name].unit
     for s in UNIT_SUFFIXES:
         if name.endswith(s):
-            return _SUFFIX_UNITS.get(s, "1")
+            return SUFFIX_UNITS[s]
     return "1"
 
 
