@@ -239,11 +239,13 @@ class GearSystem:
         mesh_model: Optional[str] = None,
         mesh_stiffness_n_per_m: Optional[Sequence[float]] = None,
         transmission_error_m: Optional[Sequence[float]] = None,
+        mesh_stiffness_scale: float = 1.0,
     ) -> GearSystem:
         """Support stiffness per shaft against speed; optional uniform mesh
         tables over one mesh period (phases i / n): normal mesh stiffness
         [N/m] instead of ``mesh_model``, TE [m] instead of
-        ``te_amplitude_um`` (default 2 um). Negative ``torque_nm``: coast."""
+        ``te_amplitude_um`` (default 2 um); ``mesh_stiffness_scale``
+        multiplies the mesh stiffness table. Negative ``torque_nm``: coast."""
     @property
     def mesh_model(self) -> str: ...
     def params(self) -> dict[str, float]: ...

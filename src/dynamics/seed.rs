@@ -60,6 +60,11 @@ pub struct GearSystemDefaults {
     pub te_amplitude_m: f64,
     /// Samples of k_m and e per mesh period passed to the model. Default 64.
     pub table_points: usize,
+    /// Factor on the whole mesh stiffness table k_m(t) [-]. Default 1 (the
+    /// computed or given table as it is). A calibration input: seed A gives
+    /// no mesh stiffness values, so a scale pinned by its transition speeds
+    /// stands for the difference between its numerical method and ours.
+    pub mesh_stiffness_scale: f64,
 }
 
 impl Default for GearSystemDefaults {
@@ -71,6 +76,7 @@ impl Default for GearSystemDefaults {
             bearing_damping_ratio: 0.02,
             te_amplitude_m: 2e-6,
             table_points: 64,
+            mesh_stiffness_scale: 1.0,
         }
     }
 }
@@ -82,6 +88,7 @@ impl GearSystemDefaults {
         non_negative("mesh_damping_ratio", self.mesh_damping_ratio)?;
         non_negative("bearing_damping_ratio", self.bearing_damping_ratio)?;
         non_negative("te_amplitude_m", self.te_amplitude_m)?;
+        positive("mesh_stiffness_scale", self.mesh_stiffness_scale)?;
         if self.table_points < 8 {
             return Err(Error::config(
                 "table_points",
@@ -248,9 +255,17 @@ pub fn helical_params_from_tables(
         mesh_damping_ratio: d.mesh_damping_ratio,
         mesh_damping: d.mesh_damping,
         input_torque_n_m: pair.input_torque_n_m(),
-        mesh_stiffness_n_per_m: tables.normal_stiffness_n_per_m,
+        mesh_stiffness_n_per_m: scaled(tables.normal_stiffness_n_per_m, d.mesh_stiffness_scale),
         transmission_error_m: tables.transmission_error_m,
     })
+}
+
+/// The mesh stiffness table times `scale` (the table itself when 1, bit for bit).
+fn scaled(k: Vec<f64>, scale: f64) -> Vec<f64> {
+    if scale == 1.0 {
+        return k;
+    }
+    k.into_iter().map(|v| v * scale).collect()
 }
 
 /// Seed A's first gear pair with its computed potential-energy mesh
@@ -321,6 +336,38 @@ mod tests {
         };
         let e = helical_params_from_tables(&pair, short, kr, ka, &d).unwrap_err();
         assert!(e.to_string().contains("transmission_error_m"), "{e}");
+    }
+
+    #[test]
+    fn mesh_stiffness_scale_scales_the_table_and_the_static_deflection() {
+        let d = GearSystemDefaults::default();
+        let half = GearSystemDefaults {
+            mesh_stiffness_scale: 0.5,
+            ..d
+        };
+        let p1 = seed_a_params(&d).unwrap();
+        let p2 = seed_a_params(&half).unwrap();
+        for (a, b) in p1.mesh_stiffness_n_per_m.iter().zip(&p2.mesh_stiffness_n_per_m) {
+            assert_eq!(*b, 0.5 * a);
+        }
+        // The static mesh force carries the same torque: on half the stiffness
+        // the teeth deflect twice as far beyond the backlash (F = k (d - b)).
+        let beyond = |p: &HelicalPairParams| {
+            let m = HelicalPair::new(p.clone()).unwrap();
+            let x = m.static_state().unwrap();
+            let a = m.projection();
+            (0..7).map(|i| a[i] * x[i]).sum::<f64>() - p.half_backlash_m
+        };
+        let ratio = beyond(&p2) / beyond(&p1);
+        assert!((ratio - 2.0).abs() < 1e-9, "{ratio}");
+        let bad = GearSystemDefaults {
+            mesh_stiffness_scale: 0.0,
+            ..d
+        };
+        assert!(seed_a_params(&bad)
+            .unwrap_err()
+            .to_string()
+            .contains("mesh_stiffness_scale"));
     }
 
     #[test]

@@ -429,7 +429,7 @@ impl PyGearSystem {
     /// (`mesh_model`) and the first-harmonic TE (`te_amplitude_um`). A
     /// negative `torque_nm` is coast (the pinion driven backwards).
     #[new]
-    #[pyo3(signature = (gear, speeds_rpm, radial_stiffness_n_per_m, axial_stiffness_n_per_m, *, half_backlash_um=50.0, mesh_damping_ratio=0.07, mesh_damping="in-contact", bearing_damping_ratio=0.02, te_amplitude_um=None, torque_nm=None, table_points=64, mesh_model=None, mesh_stiffness_n_per_m=None, transmission_error_m=None))]
+    #[pyo3(signature = (gear, speeds_rpm, radial_stiffness_n_per_m, axial_stiffness_n_per_m, *, half_backlash_um=50.0, mesh_damping_ratio=0.07, mesh_damping="in-contact", bearing_damping_ratio=0.02, te_amplitude_um=None, torque_nm=None, table_points=64, mesh_model=None, mesh_stiffness_n_per_m=None, transmission_error_m=None, mesh_stiffness_scale=1.0))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
@@ -447,6 +447,7 @@ impl PyGearSystem {
         mesh_model: Option<String>,
         mesh_stiffness_n_per_m: Option<Vec<f64>>,
         transmission_error_m: Option<Vec<f64>>,
+        mesh_stiffness_scale: f64,
     ) -> PyResult<Self> {
         if let (Some(m), Some(_)) = (&mesh_model, &mesh_stiffness_n_per_m) {
             return Err(Error::config(
@@ -471,6 +472,7 @@ impl PyGearSystem {
             bearing_damping_ratio,
             te_amplitude_m: te_amplitude_um.unwrap_or(2.0) * 1e-6,
             table_points,
+            mesh_stiffness_scale,
         };
         let schedule = support_schedule(&speeds_rpm, &radial_stiffness_n_per_m, &axial_stiffness_n_per_m).py_err()?;
         let mut spec = gear.inner.spec.clone();
@@ -509,6 +511,7 @@ impl PyGearSystem {
         d.insert("bearing_damping_ratio", self.defaults.bearing_damping_ratio);
         d.insert("half_backlash_um", p.half_backlash_m * 1e6);
         d.insert("te_amplitude_um", self.defaults.te_amplitude_m * 1e6);
+        d.insert("mesh_stiffness_scale", self.defaults.mesh_stiffness_scale);
         d.insert("torque_nm", p.input_torque_n_m);
         d.insert("pinion_mass_kg", p.pinion.mass_kg);
         d.insert("gear_mass_kg", p.gear.mass_kg);
@@ -640,6 +643,7 @@ impl PyGearSystem {
             bearing_damping_ratio: d.bearing_damping_ratio,
             te_amplitude_m: d.te_amplitude_m,
             table_points: d.table_points,
+            mesh_stiffness_scale: d.mesh_stiffness_scale,
             schedule: self.schedule.clone(),
             mesh_model: self.mesh_model.clone(),
             mesh_stiffness_n_per_m: self.tables.mesh_stiffness_n_per_m.clone(),
@@ -657,6 +661,7 @@ impl PyGearSystem {
             bearing_damping_ratio: s.bearing_damping_ratio,
             te_amplitude_m: s.te_amplitude_m,
             table_points: s.table_points,
+            mesh_stiffness_scale: s.mesh_stiffness_scale,
         };
         let tables = UserTables {
             mesh_stiffness_n_per_m: s.mesh_stiffness_n_per_m,
@@ -1448,6 +1453,7 @@ pub fn gear_defaults() -> BTreeMap<&'static str, f64> {
     m.insert("mesh_damping_ratio", d.mesh_damping_ratio);
     m.insert("bearing_damping_ratio", d.bearing_damping_ratio);
     m.insert("te_amplitude_um", d.te_amplitude_m * 1e6);
+    m.insert("mesh_stiffness_scale", d.mesh_stiffness_scale);
     m.insert("table_points", d.table_points as f64);
     m.insert("bearings_per_shaft", crate::dynamics::seed::BEARINGS_PER_SHAFT as f64);
     m

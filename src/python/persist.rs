@@ -56,6 +56,9 @@ pub struct GearSystemState {
     pub te_amplitude_m: f64,
     /// Mesh stiffness table points.
     pub table_points: usize,
+    /// Factor on the mesh stiffness table (1 in states saved before it existed).
+    #[serde(default = "unit_scale")]
+    pub mesh_stiffness_scale: f64,
     /// (speed_rpm, kr, ka) support schedule.
     pub schedule: Vec<(f64, f64, f64)>,
     /// "potential-energy", "iso" or "table".
@@ -66,6 +69,10 @@ pub struct GearSystemState {
     /// User transmission error table \[m\], if given.
     #[serde(default)]
     pub transmission_error_m: Option<Vec<f64>>,
+}
+
+fn unit_scale() -> f64 {
+    1.0
 }
 
 fn to_dict<'py>(py: Python<'py>, env: &Envelope) -> PyResult<Bound<'py, PyDict>> {
