@@ -27,7 +27,19 @@ from thermobear.diagnosis import SPINDLE_QUANTITIES, SpindleModelSpec, synthetic
 
 SPEEDS_RPM = np.arange(6000.0, 18001.0, 2000.0)
 PRELOADS_N = (250.0, 400.0)
-DESIGN = list(SPINDLE_QUANTITIES)
+#: A rig's sensors (the registry also holds what only a simulation reports).
+DESIGN = [
+    "front_outer_ring_temperature_c",
+    "rear_outer_ring_temperature_c",
+    "front_inner_ring_temperature_c",
+    "rear_inner_ring_temperature_c",
+    "front_housing_temperature_c",
+    "rear_housing_temperature_c",
+    "axial_growth_um",
+    "operating_preload_n",
+    "velocity_rms_mm_s",
+]
+assert set(DESIGN) <= set(SPINDLE_QUANTITIES)
 HIGH_SNR, TYPICAL = 0.2, 1.0
 
 _SPECS: dict = {}

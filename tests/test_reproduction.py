@@ -13,8 +13,16 @@ import pytest
 
 from thermobear.errors import ConfigError
 from thermobear.studies.demo import STUDIES, study_function
+from thermobear.studies.paper_numbers import counts, quotes
 from thermobear.studies.reproduction import STATUSES, Row
-from thermobear.studies.reproduction_table import all_rows, counts, summary, table
+from thermobear.studies.reproduction_table import (
+    NUMBER_COLUMNS,
+    all_rows,
+    figure_of,
+    items,
+    numbers,
+    summary,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -100,41 +108,106 @@ def test_every_row_has_its_figure_or_table_in_the_demo_output(demo_files):
             assert f"seed_a_fig{num}" in r.figure, r.figure
 
 
-def test_table_and_summary(tmp_path, capsys):
+@pytest.fixture(scope="module")
+def number_table():
+    """The full reproduction table, numbers and claims (as the demo and
+    the docs page build it)."""
+    return numbers()
+
+
+def test_table_and_summary(tmp_path, capsys, number_table):
     from thermobear.studies.reproduction_table import write_reproduction
 
-    files = write_reproduction(tmp_path)
-    assert {f.name for f in files} == {"reproduction.csv", "reproduction.parquet"}
+    files = write_reproduction(tmp_path, table=number_table)
+    assert {f.name for f in files} == {
+        "reproduction.csv", "reproduction.parquet", "reproduction_items.csv",
+        "reproduction_items.parquet",
+    }  # fmt: skip
     df = pl.read_parquet(tmp_path / "reproduction.parquet")
-    assert df.equals(table()) and df.height == len(all_rows())
-    assert summary() in capsys.readouterr().out
-    n, m = counts()["A"]
-    assert summary().startswith(f"seed A: {n} of {m} results reproduced or explained")
+    assert df.equals(number_table)
+    assert tuple(df.columns) == NUMBER_COLUMNS
+    # one row per quoted number and per claim, each evaluated
+    q = quotes(kind=None)
+    assert df.height == q.height and set(df["id"]) == set(q["id"])
+    assert summary(number_table) in capsys.readouterr().out
+    per_item = pl.read_parquet(tmp_path / "reproduction_items.parquet")
+    assert per_item.height == len(all_rows())
 
 
-def test_readme_gives_the_counts_of_the_rows():
+def test_a_figures_status_follows_from_its_numbers(number_table):
+    it = items(number_table)
+    for r in it.iter_rows(named=True):
+        if r["numbers"]:
+            sub = number_table.filter(
+                (pl.col("seed") == r["seed"]) & (pl.col("kind") == "number")
+                & pl.col("item").map_elements(figure_of, return_dtype=pl.Utf8).eq(r["item"])
+            )  # fmt: skip
+            comparable = sub.filter(pl.col("within").is_not_null())
+            n_in = int(comparable["within"].sum())
+            assert r["within"] == n_in
+            if comparable.height and n_in == comparable.height:
+                assert r["status"] == "reproduced", r["item"]
+            elif n_in == 0 and comparable.height:
+                assert r["status"] == "differs", r["item"]
+
+
+def test_what_the_reproduction_reaches(number_table):
+    """Seed A: at least 80 % of its numbers within tolerance, fitted and
+    held out alike, and at least half of the held-out ones inside their
+    95 % band. Seed B reaches 36 of 63 (the goal of 80 % is not met; the
+    page gives each miss its evidence): this pins it against regressions.
+    Every quoted number is evaluated (ours or "not comparable")."""
+    a = counts(number_table, "A")
+    assert a["all"][0] >= 0.8 * a["all"][1] and a["checked"][0] >= 0.8 * a["checked"][1], a
+    assert a["checked in band"][0] >= 0.5 * a["checked in band"][1], a
+    b = counts(number_table, "B")
+    assert b["all"][0] >= 36 and b["all"][1] + b["not comparable"][1] == 67, b
+    assert number_table["ours"].is_nan().sum() == 0  # no NaN placeholder: null
+
+
+def test_readme_gives_the_counts_of_the_table(number_table):
     text = " ".join((ROOT / "README.md").read_text().split())
-    found = re.findall(r"seed ([AB]): (\d+) of (\d+) results reproduced or explained", text)
-    assert {s: (int(n), int(m)) for s, n, m in found} == counts()
+    for seed in ("A", "B"):
+        c = counts(number_table, seed)
+        n, m = c["all"]
+        want = f"seed {seed}: {n} of {m} numbers within tolerance"
+        assert want in text, want
 
 
-def test_docs_page_is_generated_from_the_rows():
+def test_docs_page_is_generated_from_the_table(number_table):
     import importlib.util
 
     page = " ".join((ROOT / "docs" / "reproduction.md").read_text().split())
-    assert "<!-- reproduction-table -->" in page and "<!-- reproduction-counts -->" in page
+    for marker in ("table", "counts", "numbers", "claims"):
+        assert f"<!-- reproduction-{marker} -->" in page, marker
     nav = (ROOT / "mkdocs.yml").read_text()
     assert "reproduction.md" in nav and "docs/hooks/reproduction.py" in nav
     spec = importlib.util.spec_from_file_location("hook", ROOT / "docs/hooks/reproduction.py")
     assert spec and spec.loader
     hook = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(hook)
-    md = hook.table_markdown(all_rows())
+    md = hook.table_markdown(items(number_table))
     assert md.count("\n") == len(all_rows()) + 1
     for r in all_rows():
         assert f"| {r.seed} | {r.item} |" in md and r.test in md
-    # The period-1 section quotes the evidence pinned by the Fig. 14 row's test.
-    fig14 = next(r for r in all_rows() if r.seed == "A" and r.item == "Fig. 14")
-    for number in ("4748 N", "5.3 µm", "1.5 µm", "3.8 µm", "25 N m", "30 N m", "6.8 %"):
-        assert number in fig14.ours + " " + fig14.reason, number
-        assert number in page, number
+    nums = hook.numbers_markdown(number_table, "number")
+    claims = hook.numbers_markdown(number_table, "claim")
+    kinds = number_table["kind"].to_list()
+    assert nums.count("\n") == kinds.count("number") + 1
+    assert claims.count("\n") == kinds.count("claim") + 1
+    for i in number_table["id"]:
+        assert f"`{i}`" in nums + claims
+
+
+def test_the_reproduction_page_code_runs_as_written(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    text = (ROOT / "docs" / "reproduction.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", text, re.S)
+    assert blocks
+    namespace: dict = {}
+    for code in blocks:
+        exec(compile(code, "reproduction.md", "exec"), namespace)
+    assert namespace["thermal"].stiffness_case == "thermal"
+    assert namespace["thermal"].params["te_amplitude_um"] == pytest.approx(
+        float(namespace["model"].values[0])
+    )

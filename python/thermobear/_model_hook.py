@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import functools
 import inspect
-from typing import Any, Callable, Collection, Optional, TypeVar
+from typing import Any, Callable, Collection, Optional, Protocol, TypeVar
 
 from .errors import ConfigError
 
@@ -41,6 +41,13 @@ LOAD_SCALES = {
 }
 
 F = TypeVar("F", bound=Callable[..., Any])
+
+
+class CalibratedMachine(Protocol):
+    """What stands for a machine in a downstream call: an object with the
+    hook ``_thermobear_model_()`` (a calibrated model)."""
+
+    def _thermobear_model_(self) -> tuple[Any, dict[str, Any]]: ...
 
 
 def is_calibrated(obj: Any) -> bool:

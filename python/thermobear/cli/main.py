@@ -146,7 +146,9 @@ def _thread_limit(threads: Optional[int]) -> Iterator[Optional[int]]:
 def _cmd_demo(args: argparse.Namespace) -> int:
     from ..studies.demo import run_demo
 
-    out = run_demo(Path(args.out), quick=args.quick, formats=args.format, dpi=args.dpi)
+    out = run_demo(
+        Path(args.out), quick=args.quick, formats=args.format, dpi=args.dpi, refit=args.refit
+    )
     print(f"thermobear demo: results written to {out.resolve()}")
     return EXIT_OK
 
@@ -371,6 +373,11 @@ def build_parser() -> argparse.ArgumentParser:
     d = add("demo", "run the built-in seed studies and write tables and figures", True, _cmd_demo)
     d.add_argument("--out", default="thermobear-out", help="output folder (default: %(default)s)")
     d.add_argument("--quick", action="store_true", help="coarser sweeps (for tests)")
+    d.add_argument(
+        "--refit", action="store_true",
+        help="redo the calibrations that pin the seed papers' unstated inputs (minutes) "
+        "into OUT/papers and use them",
+    )  # fmt: skip
     d.add_argument(
         "--format", type=_formats_arg, default=("png",), metavar="FMT[,FMT...]",
         help="figure formats, a comma list of png, pdf, svg (default: png)",

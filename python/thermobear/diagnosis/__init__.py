@@ -32,6 +32,7 @@ The machines behind the protocol of ``thermobear.diagnosis.protocol``: one beari
 from .bearing_spec import BearingModelSpec, model_from_toml
 from .calibrated import CalibratedModel
 from .candidates import Candidate, candidates, sensor_offset_candidates
+from .gear_spec import GEAR_QUANTITIES, GearModelSpec
 from .joint import Calibration, calibrate
 from .measurements import QUANTITIES, load_measurements, synthetic_measurements, typical_sigma
 from .protocol import ModelSpec
@@ -56,6 +57,8 @@ __all__ = [
     "BearingModelSpec",
     "CalibratedModel",
     "Calibration",
+    "GEAR_QUANTITIES",
+    "GearModelSpec",
     "Candidate",
     "Diagnosis",
     "ModelSpec",

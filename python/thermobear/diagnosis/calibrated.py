@@ -157,7 +157,10 @@ class CalibratedModel:
         thermal options) with the load scales; or the
         [`Spindle`][thermobear.Spindle] configured at its stated preload
         (scaled) with ``effects``, ``unbalance_grade`` and the preload
-        scales."""
+        scales; or the [`GearPair`][thermobear.GearPair] with its calibrated
+        [`GearSystem`][thermobear.GearSystem] inputs (and, under
+        ``"_defaults"``, the stiffness case, torque and bearings a call may
+        change)."""
         return machine_options(self.spec)
 
     _thermobear_model_ = model
@@ -238,7 +241,7 @@ def _bounds(c: Optional[Candidate]) -> tuple[float, float]:
 
 
 def machine_options(spec: Any) -> tuple[Any, dict]:
-    """``(machine, options)`` of a bearing or spindle spec (see
+    """``(machine, options)`` of a bearing, spindle or gear spec (see
     ``CalibratedModel.model``)."""
     from .registry import LOAD_SCALE_OPTIONS
 
@@ -250,9 +253,21 @@ def machine_options(spec: Any) -> tuple[Any, dict]:
         return spec.bearing, opts
     if hasattr(spec, "configured"):
         o = spec.options
+        unbalance = spec.unbalance() if hasattr(spec, "unbalance") else {}
         opts = {"effects": list(spec.effects), "unbalance_grade": float(o["unbalance_grade"])}
+        if unbalance.get("unbalance_g_mm") is not None:  # declared: the rotor's g mm
+            opts = {"effects": list(spec.effects), "unbalance_g_mm": unbalance["unbalance_g_mm"]}
         opts |= {k: float(v) for k, v in o.items() if k.startswith("preload_scale")}
         return spec.configured(spec.spindle.preload_n), opts
+    if hasattr(spec, "gear") and hasattr(spec, "system_options"):
+        # the pair's calibrated inputs; the stiffness case, the torque and the
+        # bearings are defaults a call may change (conditions, not inputs)
+        opts = spec.system_options()
+        opts.pop("torque_n_m", None)
+        defaults = {"stiffness": spec.options["stiffness"], "bearings": spec.bearing_model()}
+        if spec.options["torque_n_m"] is not None:
+            defaults["torque_n_m"] = float(spec.options["torque_n_m"])
+        return spec.gear, {**opts, GEAR_DEFAULTS_KEY: defaults}
     raise ConfigError(f"invalid spec = {spec!r}: a bearing or spindle model spec has no machine")
 
 
@@ -318,7 +333,14 @@ def _plain(v: Any) -> Any:
     return v
 
 
+#: The key under which a calibrated gear model's options carry the
+#: settings a call may change (stiffness case, torque, bearings).
+GEAR_DEFAULTS_KEY = "_defaults"
+
+
 def _machine_state(spec: Any) -> dict:
+    if hasattr(spec, "gear") and hasattr(spec, "system_options"):
+        return {"machine": "gear", "state": spec.gear._g.__reduce__()[1][0]}
     if hasattr(spec, "bearing"):
         return {"machine": "bearing", "state": spec.bearing._b.__reduce__()[1][0]}
     return {"machine": "spindle", "state": spec.spindle._native.__reduce__()[1][0]}

@@ -19,91 +19,27 @@ identified."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Protocol, Sequence
+from dataclasses import dataclass
+from typing import Any, Optional, Protocol, Sequence
 
 import numpy as np
 
 from .. import _validate as val
 from ..errors import ConfigError, ThermobearError
 from .calibrated import calibration_models
+from .calibration import Calibration
 from .measurements import prepare_measurements
 from .protocol import as_spec
 from .setting import _predict, _Setting
 from .statistics import fisher_identifiability
 
-if TYPE_CHECKING:
-    from .calibrated import CalibratedModel
-
 #: Most distinct candidates calibrated together.
 MAX_JOINT = 3
+#: The weighted residual of every point where the model fails at trial
+#: values inside the bounds (a spindle's thermal runaway at the largest
+#: friction): a misfit of a million sigmas, so the fit steps back from there.
+FAILED_RESIDUAL = 1e6
 _CHI2_95 = 3.841
-
-
-@dataclass
-class Calibration:
-    """Result of [`calibrate`][thermobear.calibrate]. ``parameters``: one row per calibrated
-    value (``name``, ``set``: the data-set label or "all" when shared,
-    ``value``, ``lower_95``, ``upper_95``, ``lower``, ``upper`` (bounds),
-    ``null`` (the baseline's), ``at_bound``, ``identified``); ``chi2`` and
-    ``n`` of the fit, ``phi`` (interval stretch), ``condition_number`` of
-    the Fisher information in correlation form, ``not_identified`` (names),
-    ``points``: every measured row with ``set``, ``model_before`` and
-    ``model_after``."""
-
-    parameters: Any
-    chi2: float
-    chi2_before: float
-    n: int
-    phi: float
-    condition_number: float
-    not_identified: list
-    points: Any
-    notes: list = field(default_factory=list)
-    _models: dict = field(default_factory=dict, repr=False, compare=False)
-
-    @property
-    def model(self) -> CalibratedModel:
-        """The calibrated model of the first data set (see
-        [`model_for`][thermobear.Calibration.model_for]): a
-        [`CalibratedModel`][thermobear.CalibratedModel]."""
-        if not self._models:
-            raise ConfigError("invalid calibration: it carries no calibrated model")
-        return next(iter(self._models.values()))
-
-    def model_for(self, set_label: str) -> CalibratedModel:
-        """The calibrated model of data set ``set_label``: its spec with the
-        values that act on it (the shared ones and its own per-set ones)."""
-        if str(set_label) in self._models:
-            return self._models[str(set_label)]
-        raise ConfigError(f"invalid set_label = {set_label!r}: not a data set of this calibration")
-
-    def summary(self) -> str:
-        """The calibration in a few lines: each value with its 95 % profile
-        interval and bounds (flagged at a bound or not identified), the fit
-        before and after, the interval stretch and the notes."""
-        lines = [
-            f"calibration of {self.parameters.height} value(s) on {self.n} points: chi^2 "
-            f"{self.chi2_before:.4g} -> {self.chi2:.4g} (phi {self.phi:.3g}, condition number "
-            f"{self.condition_number:.3g})"
-        ]
-        for r in self.parameters.iter_rows(named=True):
-            flags = ([" at its bound"] if r["at_bound"] else []) + (
-                [" not identified"] if not r["identified"] else []
-            )
-            lines.append(
-                f"  {r['name']} [{r['set']}] = {r['value']:.4g}  95 % [{r['lower_95']:.4g}, "
-                f"{r['upper_95']:.4g}]  bounds [{r['lower']:.4g}, {r['upper']:.4g}], null "
-                f"{r['null']:.4g}{''.join(flags)}"
-            )
-        lines += [f"note: {n}" for n in self.notes]
-        return "\n".join(lines)
-
-    def __repr__(self) -> str:
-        values = ", ".join(
-            f"{r['name']}={r['value']:.4g}" for r in self.parameters.iter_rows(named=True)
-        )
-        return f"Calibration({values}; chi2 {self.chi2_before:.4g} -> {self.chi2:.4g}, n={self.n})"
 
 
 @dataclass(frozen=True)
@@ -197,9 +133,11 @@ class _Problem:
         return out
 
     def resid(self, theta) -> np.ndarray:
-        return np.concatenate(
-            [(d.y - p) / d.s for d, p in zip(self.data, self.predict(theta), strict=True)]
-        )
+        try:
+            pred = self.predict(theta)
+        except ThermobearError:  # the model fails at these values (a thermal runaway)
+            return np.full(sum(d.n for d in self.data), FAILED_RESIDUAL)
+        return np.concatenate([(d.y - p) / d.s for d, p in zip(self.data, pred, strict=True)])
 
     def chi2(self, theta) -> float:
         r = self.resid(theta)
@@ -280,7 +218,18 @@ def _profile(prob: _Fittable, theta, chi_min, j, thr, halfwidth=None) -> tuple[f
     return edges[0], edges[1]
 
 
-def calibrate(datasets, parameters: Sequence[str], per_set: Sequence[str] = ()) -> Calibration:
+def calibrate(
+    datasets,
+    parameters: Sequence[str],
+    per_set: Sequence[str] = (),
+    *,
+    design_points: Optional[int] = None,
+    refine_points: Optional[int] = None,
+    refine_rounds: Optional[int] = None,
+    penalty_rpm: Optional[float] = None,
+    seed: int = 0,
+    progress: Any = None,
+) -> Calibration:
     """Calibrate up to three candidates (names from
     [`candidates`][thermobear.diagnosis.candidates.candidates] of
     each set's model: parameters, not switches) on several data sets at
@@ -291,8 +240,36 @@ def calibrate(datasets, parameters: Sequence[str], per_set: Sequence[str] = ()) 
     [`load_measurements`][thermobear.load_measurements] reads;
     ``per_set``: the names calibrated with a value of their own in each set
     (e.g. a sensor offset per run), the others shared by all sets. Returns a
-    [`Calibration`][thermobear.Calibration] (see the module docstring for the statistics)."""
+    [`Calibration`][thermobear.Calibration] (see the module docstring for the statistics).
+
+    A gear pair ([`GearModelSpec`][thermobear.GearModelSpec], or a
+    [`GearPair`][thermobear.GearPair] for its spec with the defaults) is
+    calibrated on transition speeds of its bifurcation diagram by a design
+    of experiments and its refinement, up to four inputs
+    (``thermobear.diagnosis.gear_calibration``): ``design_points``,
+    ``refine_points``, ``refine_rounds``, ``penalty_rpm``, ``seed`` and
+    ``progress(done, total)`` set it (they apply to gear pairs only); the
+    result's ``design`` holds every evaluated point."""
     sets = _sets(datasets)
+    gear = [_is_gear(spec) for _, spec, _ in sets]
+    if any(gear):
+        if not all(gear):
+            raise ConfigError("invalid datasets: a gear pair cannot share a calibration with "
+                              "a bearing or spindle")  # fmt: skip
+        if per_set:
+            raise ConfigError(f"invalid per_set = {list(per_set)!r}: a gear calibration shares "
+                              "every input")  # fmt: skip
+        from .gear_calibration import calibrate_gear
+
+        return calibrate_gear(
+            sets, parameters, design_points=design_points, refine_points=refine_points,
+            refine_rounds=refine_rounds, penalty_rpm=penalty_rpm, seed=seed, progress=progress,
+        )  # fmt: skip
+    for name, v in (("design_points", design_points), ("refine_points", refine_points),
+                    ("refine_rounds", refine_rounds), ("penalty_rpm", penalty_rpm),
+                    ("progress", progress)):  # fmt: skip
+        if v is not None:
+            raise ConfigError(f"invalid {name} = {v!r}: a setting of a gear pair's calibration")
     data = [prepare_measurements(m, spec.quantities, None) for _, spec, m in sets]
     names = val.names("parameters", parameters, one=True)
     slots = _slots(sets, data, names, val.names("per_set", per_set, one=True))
@@ -310,6 +287,12 @@ def calibrate(datasets, parameters: Sequence[str], per_set: Sequence[str] = ()) 
     models = calibration_models(prob, theta, jac, intervals, phi)
     result._models = {label: m for (label, _, _), m in zip(prob.sets, models, strict=True)}
     return result
+
+
+def _is_gear(spec: Any) -> bool:
+    from .gear_spec import GearModelSpec
+
+    return isinstance(spec, GearModelSpec)
 
 
 def _result(prob: _Problem, theta, intervals, weak, stats) -> Calibration:

@@ -115,6 +115,27 @@ RENAMED_QUANTITIES: dict[str, str] = {
 #: column; a spindle's) rather than an axial load (a single bearing's).
 PRELOAD_REGISTRIES: list[dict] = []
 
+#: Quantity registries of gear pairs (transition speeds of their
+#: bifurcation diagrams): a row's condition is its input torque, bearing
+#: stiffness case and sweep direction, not a load
+#: (``thermobear.diagnosis.gear_spec``).
+GEAR_REGISTRIES: list[dict] = []
+
+#: The columns of a gear measurement table.
+GEAR_COLUMNS = (
+    "speed_rpm",
+    "torque_n_m",
+    "stiffness",
+    "direction",
+    "quantity",
+    "value",
+    "sigma",
+    "run",
+)
+#: The bearing stiffness cases and sweep directions a gear row may name.
+GEAR_STIFFNESS_CASES = ("constant", "speed", "thermal", "any")
+GEAR_DIRECTIONS = ("up", "down", "any")
+
 
 def current_quantity(name: str, stacklevel: int = 3) -> str:
     """The current name of a quantity (an older one warns)."""
@@ -181,8 +202,10 @@ def load_measurements(
     if duplicates not in ("error", "mean"):
         raise ConfigError(f"invalid duplicates = {duplicates!r}: 'error' or 'mean'")
     df = _current_quantities(_read_table(data))
-    _known_columns(df)
     table = _registry_for(df, quantities, model)
+    if any(table is t for t in GEAR_REGISTRIES):
+        return _gear_table(df, table, duplicates)
+    _known_columns(df)
     preload = any(table is t for t in PRELOAD_REGISTRIES)
     df = _operating_columns(_preload_column(df) if preload else df)
     df = _numeric_columns(df)
@@ -192,20 +215,99 @@ def load_measurements(
     return df.rename({"axial_n": "preload_n"}) if preload else df
 
 
-def _known_columns(df: Any) -> None:
-    """Every column one of ``KNOWN_COLUMNS`` (a DataError naming the
-    nearest known one otherwise)."""
-    unknown = [c for c in df.columns if c not in KNOWN_COLUMNS]
+def _known_columns(df: Any, known: Sequence[str] = KNOWN_COLUMNS) -> None:
+    """Every column one of ``known`` (a DataError naming the nearest known
+    one otherwise)."""
+    unknown = [c for c in df.columns if c not in known]
     if not unknown:
         return
     parts = []
     for c in unknown:
-        near = difflib.get_close_matches(str(c).lower(), KNOWN_COLUMNS, n=1, cutoff=0.6)
+        near = difflib.get_close_matches(str(c).lower(), list(known), n=1, cutoff=0.6)
         parts.append(f"{c}: did you mean {near[0]}?" if near else f"{c}")
     raise DataError(
         f"invalid measurements: unknown column(s) {'; '.join(parts)} "
-        f"(known columns: {', '.join(KNOWN_COLUMNS)})"
+        f"(known columns: {', '.join(known)})"
     )
+
+
+def _gear_table(df: Any, table: dict, duplicates: str) -> Any:
+    """A gear measurement table checked: ``GEAR_COLUMNS`` only;
+    ``speed_rpm`` (where the transition was read), ``quantity``, ``value``
+    required; ``torque_n_m`` optional (null: the model's torque);
+    ``stiffness`` and ``direction`` default ``"any"``; speeds and values in
+    ``SPEED_RANGE_RPM``; sigma > 0 or the quantity's typical one."""
+    import polars as pl
+
+    _known_columns(df, GEAR_COLUMNS)
+    for c in ("speed_rpm", "quantity", "value"):
+        if c not in df.columns:
+            raise DataError(f"invalid measurements: missing column {c!r} (have {df.columns})")
+    if df.height == 0:
+        raise DataError("invalid measurements: the table has no rows")
+    for c, default in (("stiffness", "any"), ("direction", "any")):
+        if c not in df.columns:
+            df = df.with_columns(pl.lit(default).alias(c))
+    if "torque_n_m" not in df.columns:
+        df = df.with_columns(pl.lit(None, dtype=pl.Float64).alias("torque_n_m"))
+    for c in ("speed_rpm", "value") + (("sigma",) if "sigma" in df.columns else ()):
+        x = _numbers(df[c], c)
+        if not np.all(np.isfinite(x)):
+            i = int(np.argmax(~np.isfinite(x)))
+            raise DataError(f"invalid {c} = {x[i]} in row {i}: NaN, infinite or missing")
+        df = df.with_columns(pl.Series(c, x))
+    torque = df["torque_n_m"]
+    if torque.dtype != pl.Float64:
+        got = torque.cast(pl.Utf8).str.strip_chars().replace("", None)
+        df = df.with_columns(pl.Series("torque_n_m", _nullable_numbers(got, "torque_n_m")))
+    for c, allowed in (("stiffness", GEAR_STIFFNESS_CASES), ("direction", GEAR_DIRECTIONS)):
+        df = df.with_columns(pl.col(c).cast(pl.Utf8).str.strip_chars())
+        bad = [v for v in df[c].to_list() if v not in allowed]
+        if bad:
+            raise DataError(f"invalid {c} = {bad[0]!r}: one of {', '.join(allowed)}")
+    df = _checked_quantities(df, table)
+    lo, hi = SPEED_RANGE_RPM
+    for c in ("speed_rpm", "value"):
+        x = df[c].to_numpy()
+        bad = (x <= lo) | (x > hi)
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise DataError(
+                f"invalid {c} = {x[i]:g} in row {i}: a transition speed in {lo:g} < rpm <= {hi:g}"
+            )
+    df = _with_sigma_and_run(df, table, GEAR_COLUMNS)
+    key = ["speed_rpm", "torque_n_m", "stiffness", "direction", "quantity", "run"]
+    n = df.group_by(key).len().filter(pl.col("len") > 1)
+    if n.height and duplicates == "error":
+        r = n.row(0, named=True)
+        raise DataError(
+            f"invalid measurements: {n.height} duplicated measurement(s): {r['quantity']} at "
+            f"speed_rpm={r['speed_rpm']:g}, stiffness={r['stiffness']}, direction="
+            f"{r['direction']}, run={r['run']!r}: {r['len']} rows; give each its own run label "
+            'or load with duplicates="mean"'
+        )
+    if n.height:
+        df = (
+            df.group_by(key, maintain_order=True)
+            .agg(pl.col("value").mean(), (pl.col("sigma").pow(2).sum().sqrt() / pl.len()))
+            .select(list(GEAR_COLUMNS))
+        )
+    return df
+
+
+def _nullable_numbers(col: Any, name: str) -> Any:
+    """A text column as floats, empty entries null; other text a DataError."""
+    import polars as pl
+
+    got = col.cast(pl.Float64, strict=False)
+    bad = (got.is_null() & col.is_not_null()).to_numpy()
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise DataError(f"invalid {name} = {col[i]!r} in row {i}: not numeric")
+    x = got.to_numpy()
+    if np.any(~np.isfinite(x[~np.isnan(x)])):
+        raise DataError(f"invalid {name}: not finite")
+    return got
 
 
 def _checked_conditions(df: Any, load_name: str) -> None:
@@ -422,9 +524,14 @@ def _other_kind_hint(quantity: str, table: dict) -> str:
     return ""
 
 
-def _with_sigma_and_run(df: Any, table: dict) -> Any:
+def _with_sigma_and_run(
+    df: Any,
+    table: dict,
+    columns: Sequence[str] = ("speed_rpm", "axial_n", "radial_n", "quantity", "value", "sigma",
+                              "run"),
+) -> Any:  # fmt: skip
     """Sigma checked (> 0) or the typical one; run labels as text ("1"
-    when missing); the tidy columns in order."""
+    when missing); the tidy ``columns`` in order."""
     import polars as pl
 
     if "sigma" in df.columns:
@@ -436,7 +543,7 @@ def _with_sigma_and_run(df: Any, table: dict) -> Any:
     if "run" not in df.columns:
         df = df.with_columns(pl.lit("1").alias("run"))
     df = df.with_columns(pl.col("run").cast(pl.Utf8))
-    return df.select(["speed_rpm", "axial_n", "radial_n", "quantity", "value", "sigma", "run"])
+    return df.select(list(columns))
 
 
 def typical_sigma(table: dict, quantities: Sequence[str], values: np.ndarray) -> np.ndarray:

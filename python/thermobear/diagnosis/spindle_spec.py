@@ -98,8 +98,36 @@ SPINDLE_QUANTITIES: dict[str, tuple[str, float, tuple[float, float], float, bool
     "axial_growth_um": ("axial_growth_um", 1.0, (-1e4, 1e4), 0.5, False),
     "operating_preload_n": ("operating_preload_n", 1.0, (0.0, 1e5), 0.02, True),
     "velocity_rms_mm_s": ("velocity_rms_mm_s", 1.0, (0.0, 1e3), 0.05, True),
-}
+    # What a simulation study reports beside the rig's sensors (seed B
+    # Figs. 5-20); the sigmas are assumed, as above: a thermocouple in a
+    # ball pocket 0.5 K, a displacement probe 0.2 um (its thermal part 0.5
+    # um: the difference of two expansions), a contact load 2 %, a contact
+    # angle 0.2 deg, a radial stiffness 5 %, the 1X line of a velocity
+    # spectrum 5 %; the outer minus the inner contact load (the balls'
+    # centrifugal force) 3 N, two loads of 2 % of about 100 N each; the
+    # compensation preload 0.5 N (absolute: it is zero without a spring).
+    "front_ball_temperature_c": ("front_ball_temperature_c", 1.0, _T_RANGE, 0.5, False),
+    "thermal_radial_displacement_um": (
+        "thermal_radial_displacement_um", 1.0, (-1e3, 1e3), 0.5, False,
+    ),
+    "radial_displacement_um": ("radial_displacement_um", 1.0, (0.0, 1e3), 0.2, False),
+    "total_radial_displacement_um": (
+        "total_radial_displacement_um", 1.0, (0.0, 1e3), 0.5, False,
+    ),
+    "inner_load_max_n": ("inner_load_max_n", 1.0, (0.0, 1e4), 0.02, True),
+    "outer_load_max_n": ("outer_load_max_n", 1.0, (0.0, 1e4), 0.02, True),
+    "outer_inner_load_difference_n": (
+        "outer_inner_load_difference_n", 1.0, (-1e4, 1e4), 3.0, False,
+    ),
+    "inner_contact_angle_deg": ("inner_contact_angle_deg", 1.0, (0.0, 90.0), 0.2, False),
+    "outer_contact_angle_deg": ("outer_contact_angle_deg", 1.0, (0.0, 90.0), 0.2, False),
+    "k_xx_n_per_m": ("k_xx_n_per_m", 1.0, (0.0, 1e11), 0.05, True),
+    "compensation_preload_n": ("compensation_preload_n", 1.0, (-1e4, 1e4), 0.5, False),
+    "x1_mm_s": ("x1_mm_s", 1.0, (0.0, 1e3), 0.05, True),
+}  # fmt: skip
 _VIB = "velocity_rms_mm_s"
+#: The quantities of the rotor's forced response (computed on first access).
+_ROTOR = (_VIB, "x1_mm_s")
 PRELOAD_REGISTRIES.append(SPINDLE_QUANTITIES)  # spindle data state a preload_n
 
 #: Options of the spindle model and their bounds as candidates. Spin
@@ -122,6 +150,38 @@ RUNOUT_BOUNDS_UM = (0.0, 50.0)
 #: Preload scale: the preload set by spring length or spacers is off by a
 #: factor (same bounds as the bearing's load scales).
 PRELOAD_SCALE_BOUNDS = (0.7, 1.3)
+#: Inputs a study may not know, calibratable once declared: each is an
+#: option that defaults to None (the spindle's own value, not a
+#: candidate); given a number it is applied and becomes a candidate with
+#: that value as its null. Bounds (assumed ranges, each stated here):
+#:
+#: * ``ball_diameter_scale`` 0.8-1.15 on the preset's balls (7009C: 8.73
+#:   mm): 7.0-10.0 mm, the balls of the 15 mm ring section of a 45 x 75 mm
+#:   bearing between the thinnest and the thickest rings a ground race
+#:   keeps (0.45-0.65 of the section);
+#: * ``span_scale`` 0.5-1.5 on the axial layout between the sets (the
+#:   preset's 240 mm): 120-360 mm, a motor core of 75-225 mm between
+#:   two pairs;
+#: * ``motor_loss_scale`` 0.25-3 on the preset's 600 W at 12,000 rpm:
+#:   150-1800 W, 1.5-18 % of the 10 kW the preset assumes;
+#: * ``lubrication_factor_f0``: the bounds of the spindle's lubrication
+#:   method (``thermobear.lubrication_defaults``: oil-air 0.85-3.4, half
+#:   and twice Palmgren's table value);
+#: * ``radial_load_n`` 0-3000 N at the nose: from a free-running spindle
+#:   to a heavy cut on a 45 mm front bearing (a fifth of its static rating);
+#: * ``unbalance_g_mm`` 0-10,000 g mm: the whole range the rotor model
+#:   accepts, as a simulation's excitation, not a balance grade (G2.5 is
+#:   about 5 g mm on this rotor, G4000 about 7,800 g mm).
+UNSTATED_BOUNDS: dict[str, tuple[float, float]] = {
+    "ball_diameter_scale": (0.8, 1.15),
+    "span_scale": (0.5, 1.5),
+    "motor_loss_scale": (0.25, 3.0),
+    "radial_load_n": (0.0, 3000.0),
+    "unbalance_g_mm": (0.0, 1.0e4),
+}
+#: The declarable inputs that change the spindle's stored dimensions.
+_DIMENSIONS = ("ball_diameter_scale", "span_scale", "motor_loss_scale")
+UNSTATED_INPUTS = (*_DIMENSIONS, "lubrication_factor_f0", "radial_load_n", "unbalance_g_mm")
 _OPTIONS = (
     "spin_friction_coefficient",
     "preload_kind",
@@ -133,9 +193,10 @@ _OPTIONS = (
     "lubrication",
     "churning_oil_fraction",
     *SUPPLY_OPTIONS,
+    *UNSTATED_INPUTS,
 )
 #: Options that act only on the vibration quantity (not the thermal state).
-_VIBRATION_ONLY = ("unbalance_grade", "runout_um")
+_VIBRATION_ONLY = ("unbalance_grade", "runout_um", "unbalance_g_mm")
 
 
 class SpindleModelSpec(ModelSpec):
@@ -155,6 +216,17 @@ class SpindleModelSpec(ModelSpec):
     a lubrication method or a fixed ``churning_oil_fraction`` given without
     supply keywords replaces it, as in
     [`Spindle.with_options`][thermobear.Spindle.with_options].
+
+    Inputs a study does not know (``UNSTATED_INPUTS``; each None by default,
+    the spindle's own value): ``ball_diameter_scale``, ``span_scale`` and
+    ``motor_loss_scale`` (factors on the spindle's balls, axial layout and
+    motor losses, [`with_dimensions`][thermobear.spindle.dimensions.with_dimensions]),
+    ``lubrication_factor_f0``, ``radial_load_n`` (the working load at the
+    nose) and ``unbalance_g_mm`` (the rotor's unbalance as mass times
+    radius, in place of ``unbalance_grade``). Given a number, each is
+    applied and listed as a calibration candidate (bounds:
+    ``UNSTATED_BOUNDS``).
+
     Each configuration, preload and speed is solved once (cached, shared by
     the copies of [`with_setting`][thermobear.SpindleModelSpec.with_setting])."""
 
@@ -185,6 +257,7 @@ class SpindleModelSpec(ModelSpec):
             "heat_model": str(spindle.assumptions.get("heat_model", "palmgren")),
             "lubrication": None,
             **_own_drag(spindle),
+            **dict.fromkeys(UNSTATED_INPUTS),
         }
         self.options = _merged_options(defaults, options)
         _check_options(self.options)
@@ -234,14 +307,21 @@ class SpindleModelSpec(ModelSpec):
 
     def _thermal_key(self) -> tuple:
         """Options that change the thermal state (not the vibration-only
-        ones, not the preload scales: those enter as the effective preload)."""
-        return tuple(
-            sorted(
-                (k, str(v))
-                for k, v in self.options.items()
-                if k not in _VIBRATION_ONLY and not k.startswith("preload_scale")
+        ones, not the preload scales: those enter as the effective preload);
+        computed once per spec (its options do not change after it is
+        built)."""
+        got = self.__dict__.get("_tkey")
+        if got is None or got[0] is not self.options:
+            key = tuple(
+                sorted(
+                    (k, str(v))
+                    for k, v in self.options.items()
+                    if k not in _VIBRATION_ONLY and not k.startswith("preload_scale")
+                )
             )
-        )
+            got = (self.options, key)
+            self.__dict__["_tkey"] = got
+        return got[1]
 
     def level_candidates(
         self,
@@ -272,16 +352,31 @@ class SpindleModelSpec(ModelSpec):
         # exact to the last bit); another one is set
         rate = o["spring_rate_n_per_um"]
         spring = o["preload_kind"] == "spring" and rate != self.spindle.spring_rate_n_per_um
-        drag = ("lubrication", "churning_oil_fraction", *SUPPLY_OPTIONS)
-        return self.spindle.with_options(
+        drag = ("lubrication", "churning_oil_fraction", "lubrication_factor_f0", *SUPPLY_OPTIONS)
+        radial = o["radial_load_n"]
+        return self._dimensioned().with_options(
             preload_n=self.effective_preload_n(preload_n),
             preload_kind=o["preload_kind"],
             spring_rate_n_per_um=float(rate) if spring else None,
+            radial_load_n=None if radial is None else float(radial),
             effects=list(self.effects),
             spin_friction_coefficient=float(o["spin_friction_coefficient"]),
             heat_model=str(o["heat_model"]),
             **{k: o[k] for k in drag if o[k] is not None},
         )
+
+    def _dimensioned(self) -> Spindle:
+        """The spindle with the declared dimension factors applied (once
+        per set of factors, shared by the copies)."""
+        from ..spindle.dimensions import with_dimensions
+
+        scales = {k: self.options[k] for k in _DIMENSIONS if self.options[k] is not None}
+        if not scales:
+            return self.spindle
+        key = ("dimensions", tuple(sorted(scales.items())))
+        if key not in self._cache:
+            self._cache[key] = with_dimensions(self.spindle, **scales)
+        return self._cache[key]
 
     def _state(self, preload_n: float, speed_rpm: float) -> dict:
         key = ("state", self.effects, self._thermal_key(), self.effective_preload_n(preload_n),
@@ -297,17 +392,65 @@ class SpindleModelSpec(ModelSpec):
                 "front": tuple(float(v) for v in d["front_raceway_offsets_m"]),
                 "rear": tuple(float(v) for v in d["rear_raceway_offsets_m"]),
             }
-            self._cache[key] = (_state_row(d, sp), offsets)
+            row = _state_row(d, sp)
+            row["compensation_preload_n"] = self._compensation_n(row["axial_growth_um"])
+            row["outer_inner_load_difference_n"] = row["outer_load_max_n"] - row["inner_load_max_n"]
+            self._cache[key] = (row, offsets)
         res = self._cache[key]
         if isinstance(res, ThermobearError):
             raise res
         return res
 
-    def _vibration(self, preload_n: float, speeds: np.ndarray) -> np.ndarray:
+    def _compensation_n(self, axial_growth_um: float) -> float:
+        """The preload the axial growth adds through the spring, k_s u (0
+        for a rigid preload or with ``preload_change_from_axial_growth``
+        off), as [`compensation_preload`][thermobear.compensation_preload]."""
+        o = self.options
+        if o["preload_kind"] != "spring" or "preload_change_from_axial_growth" not in self.effects:
+            return 0.0
+        return float(o["spring_rate_n_per_um"]) * float(axial_growth_um)
+
+    def mechanical(self) -> SpindleModelSpec:
+        """The same configuration without thermal displacement (the five
+        thermal-expansion effects off): seed B's uncoupled model (made once
+        per spec)."""
+        got = self.__dict__.get("_mechanical")
+        if got is not None and got.options is self.options:
+            return got
+        new = object.__new__(SpindleModelSpec)
+        new.spindle, new._known, new.options, new._cache = (
+            self.spindle, self._known, self.options, self._cache,
+        )  # fmt: skip
+        new.effects = tuple(e for e in self.effects if e not in THERMAL_DISPLACEMENT_EFFECTS)
+        self.__dict__["_mechanical"] = new
+        return new
+
+    def _row(self, preload_n: float, speed_rpm: float) -> dict:
+        """The state row with seed B's total radial displacement (eq. 22):
+        the radial displacement without thermal displacement (this
+        configuration uncoupled, same speed and preload) plus the radial
+        thermal displacement of this state."""
+        row, _ = self._state(preload_n, speed_rpm)
+        if "total_radial_displacement_um" not in row:
+            cold = row if not self.coupled else self.mechanical()._state(preload_n, speed_rpm)[0]
+            row["total_radial_displacement_um"] = abs(cold["radial_displacement_um"]) + (
+                row["thermal_radial_displacement_um"] if self.coupled else 0.0
+            )
+        return row
+
+    def unbalance(self) -> dict[str, Optional[float]]:
+        """The rotor's unbalance as [`thermobear.vibration`][thermobear.vibration]
+        takes it: ``unbalance_g_mm`` when declared, else ``unbalance_grade``."""
+        g_mm = self.options["unbalance_g_mm"]
+        if g_mm is not None:
+            return {"unbalance_grade": None, "unbalance_g_mm": float(g_mm)}
+        return {"unbalance_grade": float(self.options["unbalance_grade"]), "unbalance_g_mm": None}
+
+    def _vibration(self, preload_n: float, speeds: np.ndarray) -> dict[str, np.ndarray]:
         from ..rotor import vibration
 
-        ub = float(self.options["unbalance_grade"])
-        key = ("vibration", self.effects, self._thermal_key(), ub,
+        unbalance = self.unbalance()
+        key = ("vibration", self.effects, self._thermal_key(), tuple(sorted(unbalance.items())),
                self.effective_preload_n(preload_n), tuple(speeds.tolist()))  # fmt: skip
         if key not in self._cache:
             rotor = _RotorView(self, preload_n)
@@ -316,13 +459,14 @@ class SpindleModelSpec(ModelSpec):
                     rotor,
                     speeds,
                     coupled=self.coupled,
-                    unbalance_grade=float(self.options["unbalance_grade"]),
                     effects=list(self.effects),
+                    unbalance_grade=unbalance["unbalance_grade"],
+                    unbalance_g_mm=unbalance["unbalance_g_mm"],
                 )
             except ThermobearError as e:
                 self._cache[key] = e
                 raise
-            self._cache[key] = df[_VIB].to_numpy()
+            self._cache[key] = {_VIB: df[_VIB].to_numpy(), "x1_mm_s": df["x1_mm_s"].to_numpy()}
         res = self._cache[key]
         if isinstance(res, ThermobearError):
             raise res
@@ -347,25 +491,28 @@ class SpindleModelSpec(ModelSpec):
             )
         col = "axial_n" if "axial_n" in conditions.columns else "preload_n"
         pre = conditions[col].to_numpy().astype(float)
-        out = {q: np.empty(len(sp)) for q in SPINDLE_QUANTITIES if q != _VIB}
-        for p in sorted(set(pre.tolist())):
-            rows = np.flatnonzero(pre == p)
-            for v in np.unique(sp[rows]):
-                at = rows[sp[rows] == v]
-                row, _ = self._state(p, float(v))
-                for q, (c, s, *_r) in SPINDLE_QUANTITIES.items():
-                    if q != _VIB:
-                        out[q][at] = row[c] * s
-        return _Predictions(out, lambda: self._vibration_rows(sp, pre))
+        cells, inverse = np.unique(np.stack([pre, sp], axis=1), axis=0, return_inverse=True)
+        states = [self._row(float(p), float(v)) for p, v in cells]
+        out = {
+            q: (np.array([st[c] for st in states], dtype=float) * s)[inverse.reshape(-1)]
+            for q, (c, s, *_r) in SPINDLE_QUANTITIES.items()
+            if q not in _ROTOR
+        }
+        return _Predictions(out, lambda q: self._vibration_rows(q, sp, pre))
 
-    def _vibration_rows(self, sp: np.ndarray, pre: np.ndarray) -> np.ndarray:
+    def _vibration_rows(self, quantity: str, sp: np.ndarray, pre: np.ndarray) -> np.ndarray:
+        """The rotor's ``quantity`` (velocity RMS, or the 1X amplitude) at
+        each row; the probe's runout adds to both as a 1X line."""
         y = np.empty(len(sp))
         for p in sorted(set(pre.tolist())):
             rows = np.flatnonzero(pre == p)
             speeds = np.unique(sp[rows])
-            v = self._vibration(p, speeds)
+            v = self._vibration(p, speeds)[quantity]
             y[rows] = v[np.searchsorted(speeds, sp[rows])]
-        return runout_velocity_rms_mm_s(y, sp, float(self.options["runout_um"]))
+        runout = float(self.options["runout_um"])
+        if quantity == _VIB:
+            return runout_velocity_rms_mm_s(y, sp, runout)
+        return np.sqrt(2.0) * runout_velocity_rms_mm_s(y / np.sqrt(2.0), sp, runout)
 
     def __repr__(self) -> str:
         return f"SpindleModelSpec({self.spindle!r}, effects={list(self.effects)})"
@@ -390,16 +537,16 @@ def runout_velocity_rms_mm_s(velocity_rms_mm_s: Any, speed_rpm: Any, runout_um: 
 
 
 class _Predictions(dict):
-    """The predictions; the vibration column is computed on first access."""
+    """The predictions; the rotor's columns are computed on first access."""
 
     def __init__(self, values: dict, vibration: Any) -> None:
         super().__init__(values)
         self._vibration = vibration
 
     def __missing__(self, key: str) -> np.ndarray:
-        if key != _VIB:
+        if key not in _ROTOR:
             raise KeyError(key)
-        self[key] = self._vibration()
+        self[key] = self._vibration(key)
         return self[key]
 
 
@@ -481,6 +628,24 @@ def _check_options(o: dict) -> None:
             f"invalid churning_oil_fraction = {x!r}: a fixed cavity oil fraction overrides "
             "the oil supply given; give one or the other"
         )
+    for k in UNSTATED_INPUTS:
+        _check_unstated(k, o[k])
+
+
+def _check_unstated(name: str, value: Any) -> None:
+    """An unstated input: None, or a finite number (> 0 for the factors
+    and f0, >= 0 for the unbalance; the nose load may point either way)."""
+    if value is None:
+        return
+    ok = isinstance(value, (int, float)) and not isinstance(value, bool) and np.isfinite(value)
+    if ok and name in (*_DIMENSIONS, "lubrication_factor_f0"):
+        ok = value > 0.0
+    elif ok and name == "unbalance_g_mm":
+        ok = value >= 0.0
+    if not ok:
+        raise ConfigError(
+            f"invalid {name} = {value!r}: None or a finite number (see UNSTATED_BOUNDS)"
+        )
 
 
 # --------------------------------------------------------------------------
@@ -503,6 +668,7 @@ def _spindle_candidate_list(
     out += _preload_candidates(opts, allq)
     out += _unbalance_candidates(opts)
     out += _preload_scale_and_runout_candidates(opts, allq)
+    out += _unstated_candidates(model, allq)
     out += heat_model_candidates(opts, allq, skf_inputs=False)
     out += supply_candidates(opts, allq)
     out += sensor_offset_candidates(quantities, SPINDLE_QUANTITIES)
@@ -525,6 +691,45 @@ def _preload_scale_and_runout_candidates(opts: dict, allq: tuple) -> list[Candid
         (_VIB,), option="runout_um", role="measurement",
     )  # fmt: skip
     return [scale, runout]
+
+
+#: What each unstated input is, for its candidate.
+_UNSTATED_TEXT = {
+    "ball_diameter_scale": ("1", "ball diameter of both pairs as a factor on the spindle's"),
+    "span_scale": ("1", "axial layout between the bearing sets (spans, rotor core) as a factor"),
+    "motor_loss_scale": ("1", "motor losses (stator and rotor) as a factor on the spindle's"),
+    "lubrication_factor_f0": ("1", "Palmgren lubrication factor f0 of the viscous moment"),
+    "radial_load_n": ("N", "working radial load at the spindle nose"),
+    "unbalance_g_mm": ("g mm", "rotor unbalance (mass x radius) exciting the vibration"),
+}
+
+
+def _unstated_candidates(model: SpindleModelSpec, allq: tuple) -> list[Candidate]:
+    """A calibration candidate for each declared unstated input (an option
+    given a number; bounds ``UNSTATED_BOUNDS``, f0 those of the spindle's
+    lubrication method). The unbalance acts on the rotor's quantities only,
+    the nose load on every quantity but those."""
+    out = []
+    for name in UNSTATED_INPUTS:
+        value = model.options[name]
+        if value is None:
+            continue
+        unit, desc = _UNSTATED_TEXT[name]
+        bounds = UNSTATED_BOUNDS.get(name) or _f0_bounds(model.spindle)
+        affects = _ROTOR if name == "unbalance_g_mm" else allq
+        if name == "radial_load_n":
+            affects = tuple(q for q in allq if q not in _ROTOR)
+        out.append(_calibrated_input(name, name, unit, float(value), bounds, desc, affects))
+    return out
+
+
+def _f0_bounds(spindle: Spindle) -> tuple[float, float]:
+    """The f0 bounds of the spindle's lubrication method (oil-air when it
+    states none)."""
+    from .. import _native
+
+    method = str(spindle.assumptions.get("lubrication") or "oil-air")
+    return tuple(_native.lubrication_defaults(method, "angular_contact")["f0_bounds"])
 
 
 def _switch_candidates(base: set, allq: tuple) -> list[Candidate]:

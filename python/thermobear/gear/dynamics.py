@@ -94,9 +94,19 @@ def _settings(given: Mapping[str, Any]) -> dict[str, Any]:
     return {k: given[k] for k in SETTING_NAMES if given.get(k) is not None}
 
 
-def _check_system(system: Any) -> None:
-    if not isinstance(system, GearSystem):
-        raise _config_error(f"invalid system = {system!r}: must be a thermobear.GearSystem")
+def _check_system(system: Any) -> GearSystem:
+    """The gear system of ``system``: a [`GearSystem`][thermobear.GearSystem]
+    as it is; a calibrated gear model becomes ``GearSystem(model)`` (its
+    calibrated inputs, in its own stiffness case, at its own torque)."""
+    from .._model_hook import is_calibrated
+
+    if isinstance(system, GearSystem):
+        return system
+    if is_calibrated(system):
+        return GearSystem(system)
+    raise _config_error(
+        f"invalid system = {system!r}: must be a thermobear.GearSystem or a calibrated gear model"
+    )
 
 
 #: RK4 steps per mesh period of the sweeps when none is given; raised to
@@ -273,7 +283,7 @@ def bifurcation(
     ``steps_per_period`` (RK4 steps per mesh period; None: 64, or more when a swept speed needs
     more) is checked at every speed before the sweep starts (``sweep_steps``). GIL released; Ctrl-C
     interrupts; ``progress(done, total)``."""
-    _check_system(system)
+    system = _check_system(system)
     speeds = _speeds(speeds_rpm)
     steps = sweep_steps([system], speeds, steps_per_period)
     settings = _settings(locals())
@@ -322,9 +332,8 @@ def bifurcation_set(
 
     if not systems:
         raise _config_error("invalid systems = {}: give at least one")
+    systems = {name: _check_system(sys) for name, sys in systems.items()}
     jobs = [(name, sys, d) for name, sys in systems.items() for d in directions]
-    for _, sys, _ in jobs:
-        _check_system(sys)
     speeds = _speeds(speeds_rpm)
     steps = sweep_steps(list(systems.values()), speeds, steps_per_period)
     settings = _settings(locals())
@@ -518,7 +527,7 @@ def regime_map(
     ``settled``. The bearing stiffness schedule stays the system's. Settings
     as in [`bifurcation`][thermobear.bifurcation] (the jump settings are not used here)."""
 
-    _check_system(system)
+    system = _check_system(system)
     torques = val.reals("torques_n_m", torques_n_m).tolist()
     scales = val.reals("te_scales", te_scales).tolist()
     speeds = _speeds(speeds_rpm)
@@ -631,7 +640,7 @@ def largest_lyapunov(
         return float(
             _native.largest_lyapunov_reference(system_or_name, time, step, transient_time, method)
         )
-    _check_system(system_or_name)
+    system_or_name = _check_system(system_or_name)
     if speed_rpm is None:
         raise _config_error("invalid speed_rpm = None: a gear system needs a speed")
     if per not in ("s", "mesh_period"):

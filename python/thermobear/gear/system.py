@@ -25,9 +25,18 @@ from .tables import (
 if TYPE_CHECKING:
     import polars
 
+    from .._model_hook import CalibratedMachine
+
 
 class GearSystem:
     """The 8-DOF helical pair on its bearings.
+
+    ``gear``: a [`GearPair`][thermobear.GearPair], or a calibrated gear
+    model (``thermobear.calibrate`` on a
+    [`GearModelSpec`][thermobear.GearModelSpec]): its calibrated inputs
+    (TE, mesh damping, backlash, mesh stiffness scale) are used and may not
+    be given again with another value; its stiffness case, torque and
+    bearings are the defaults of the arguments left out.
 
     Bearing support (A-52, ``diag(Kr, Kr, Ka)`` for pinion and gear):
     ``stiffness`` is ``"speed"`` (default: quasi-static stiffness at each
@@ -61,6 +70,9 @@ class GearSystem:
     ``transmission_error_m``, or a callable returning um) replaces the
     first-harmonic TE of ``te_amplitude_um`` (default 2 um). Either is
     sampled once; the model interpolates the samples.
+    ``mesh_stiffness_scale`` [-] (default 1) multiplies the mesh stiffness
+    table, computed or given (a calibration input: seed A states no mesh
+    stiffness values).
 
     ``torque_n_m``: input torque on the pinion [N m] (default the pair's;
     the older ``torque_nm`` is deprecated); negative
@@ -75,18 +87,18 @@ class GearSystem:
     @renamed_kwargs(torque_nm="torque_n_m")
     def __init__(
         self,
-        gear: GearPair,
+        gear: Union[GearPair, CalibratedMachine],
         bearings: Any = None,
-        stiffness: Union[StiffnessMode, polars.DataFrame, Mapping[str, ArrayLike]] = "speed",
+        stiffness: Union[StiffnessMode, polars.DataFrame, Mapping[str, ArrayLike], None] = None,
         *,
         bearing_stiffness_per: Optional[BearingStiffnessPer] = None,
         bearings_per_shaft: Optional[int] = None,
         half_backlash_um: Optional[float] = None,
         backlash_total_um: Optional[float] = None,
         backlash_um: Optional[float] = None,
-        mesh_damping_ratio: float = 0.07,
-        mesh_damping: MeshDamping = "in-contact",
-        bearing_damping_ratio: float = 0.02,
+        mesh_damping_ratio: Optional[float] = None,
+        mesh_damping: Optional[MeshDamping] = None,
+        bearing_damping_ratio: Optional[float] = None,
         te_amplitude_um: Optional[float] = None,
         torque_n_m: Optional[float] = None,
         mesh_model: Optional[str] = None,
@@ -94,14 +106,25 @@ class GearSystem:
         stiffness_speeds_rpm: Optional[ArrayLike] = None,
         mesh_stiffness_n_per_m: Optional[MeshInput] = None,
         transmission_error_um: Optional[MeshInput] = None,
+        mesh_stiffness_scale: Optional[float] = None,
     ) -> None:
         from .._model_hook import scaled_load, unpack_model
         from ..bearing import Bearing
 
+        given = {
+            "half_backlash_um": half_backlash_um, "mesh_damping_ratio": mesh_damping_ratio,
+            "mesh_damping": mesh_damping, "bearing_damping_ratio": bearing_damping_ratio,
+            "te_amplitude_um": te_amplitude_um, "mesh_stiffness_scale": mesh_stiffness_scale,
+        }  # fmt: skip
+        gear, inp, defaults = _calibrated_gear(gear, given, backlash_total_um, backlash_um)
+        bearings = defaults.get("bearings") if bearings is None else bearings
+        stiffness = defaults.get("stiffness", "speed") if stiffness is None else stiffness
+        torque_n_m = defaults.get("torque_n_m") if torque_n_m is None else torque_n_m
         bearings, calibrated = unpack_model(bearings)
         if not isinstance(gear, GearPair):
-            raise _config_error(f"invalid gear = {gear!r}: must be a thermobear.GearPair")
-        half_um = backlash_half_um(half_backlash_um, backlash_total_um, backlash_um, 50.0)
+            raise _config_error(
+                f"invalid gear = {gear!r}: must be a thermobear.GearPair or a calibrated gear model"
+            )
         bearing = Bearing.preset("6208") if bearings is None else bearings
         torque = val.real(
             "torque_n_m", gear.geometry["input_torque_n_m"] if torque_n_m is None else torque_n_m
@@ -123,21 +146,13 @@ class GearSystem:
         self.bearing_stiffness_per = "shaft" if bearing_stiffness_per == "shaft" else "bearing"
         self.bearing_loads_n = {"axial_n": fa, "radial_n": fr}
         self._s = _native.GearSystem(
-            gear._g,
-            [float(v) for v in s],
-            [float(v) for v in kr],
-            [float(v) for v in ka],
-            half_backlash_um=half_um,
-            mesh_damping_ratio=val.real("mesh_damping_ratio", mesh_damping_ratio, 0.0),
-            mesh_damping=val.choice("mesh_damping", mesh_damping, ("in-contact", "always")),
-            bearing_damping_ratio=val.real("bearing_damping_ratio", bearing_damping_ratio, 0.0),
-            te_amplitude_um=val.optional_real("te_amplitude_um", te_amplitude_um),
-            torque_nm=torque,
-            table_points=points,
+            gear._g, [float(v) for v in s], [float(v) for v in kr], [float(v) for v in ka],
+            **_checked_inputs(inp, backlash_total_um, backlash_um),
+            torque_nm=torque, table_points=points,
             mesh_model=None if mesh_model is None else val.text("mesh_model", mesh_model),
             mesh_stiffness_n_per_m=self._stiffness_table(gear, mesh_stiffness_n_per_m, points),
             transmission_error_m=self._te_table(gear, transmission_error_um, points),
-        )
+        )  # fmt: skip
 
     @staticmethod
     def _stiffness_table(gear: GearPair, given: Any, points: int) -> Optional[list[float]]:
@@ -306,6 +321,89 @@ class GearSystem:
             f"k_m={p['mesh_stiffness_mean_n_per_m'] / 1e6:.0f} N/um, "
             f"2b={2 * p['half_backlash_um']:.0f} um, TE={p['te_amplitude_um']:.1f} um)"
         )
+
+
+#: The inputs a calibrated gear model sets (a call may not change them).
+CALIBRATED_GEAR_INPUTS = (
+    "half_backlash_um",
+    "mesh_damping_ratio",
+    "mesh_damping",
+    "bearing_damping_ratio",
+    "te_amplitude_um",
+    "mesh_stiffness_scale",
+)
+
+
+def _checked_inputs(
+    inp: dict[str, Any], backlash_total_um: Optional[float], backlash_um: Optional[float]
+) -> dict[str, Any]:
+    """The native keywords of the gear pair's inputs, each checked (a named
+    [`ConfigError`][thermobear.ConfigError]); the backlash by whichever
+    name it was given."""
+    return {
+        "half_backlash_um": backlash_half_um(
+            inp["half_backlash_um"], backlash_total_um, backlash_um, 50.0
+        ),
+        "mesh_damping_ratio": val.real("mesh_damping_ratio", inp["mesh_damping_ratio"], 0.0),
+        "mesh_damping": val.choice("mesh_damping", inp["mesh_damping"], ("in-contact", "always")),
+        "bearing_damping_ratio": val.real(
+            "bearing_damping_ratio", inp["bearing_damping_ratio"], 0.0
+        ),
+        "te_amplitude_um": val.optional_real("te_amplitude_um", inp["te_amplitude_um"]),
+        "mesh_stiffness_scale": val.real(
+            "mesh_stiffness_scale", inp["mesh_stiffness_scale"], 0.0, open_lo=True
+        ),
+    }
+
+
+#: The defaults of the inputs a calibrated gear model sets (None keeps a
+#: TE table's or the native default: 2 um first-harmonic TE; backlash: 50 um).
+_GEAR_INPUT_DEFAULTS: dict[str, Any] = {
+    "half_backlash_um": None,
+    "mesh_damping_ratio": 0.07,
+    "mesh_damping": "in-contact",
+    "bearing_damping_ratio": 0.02,
+    "te_amplitude_um": None,
+    "mesh_stiffness_scale": 1.0,
+}
+
+
+def _calibrated_gear(
+    gear: Any, given: dict[str, Any], *backlash_aliases: Optional[float]
+) -> tuple[Any, dict[str, Any], dict[str, Any]]:
+    """``(pair, inputs, defaults)`` of ``gear``: a calibrated gear model
+    gives its pair, the inputs it calibrated (a ``given`` value that
+    differs raises [`ConfigError`][thermobear.ConfigError]: it would undo
+    the calibration) and the defaults a call may change (stiffness case,
+    torque, bearings); a pair gives itself, the ``given`` inputs with the
+    documented defaults for those left out, and no defaults. A backlash
+    given by another name (``backlash_aliases``) is refused for a model."""
+    from .._model_hook import is_calibrated, unpack_model
+
+    if not is_calibrated(gear):
+        return gear, {k: d if given[k] is None else given[k]
+                      for k, d in _GEAR_INPUT_DEFAULTS.items()}, {}  # fmt: skip
+    pair, options = unpack_model(gear)
+    defaults = dict(options.pop("_defaults", {}))
+    fixed = {k: options[k] for k in CALIBRATED_GEAR_INPUTS if k in options}
+    if not isinstance(pair, GearPair) or len(fixed) != len(CALIBRATED_GEAR_INPUTS):
+        raise _config_error(
+            f"invalid gear = {gear!r}: a calibrated model of a gear pair is needed here "
+            "(a bearing model goes to bearings=)"
+        )
+    if any(b is not None for b in backlash_aliases):
+        raise _config_error(
+            "invalid backlash_total_um: the calibrated gear model sets half_backlash_um "
+            f"= {fixed['half_backlash_um']!r}"
+        )
+    for k, v in given.items():
+        if v is not None and v != fixed[k]:
+            raise _config_error(
+                f"invalid {k} = {v!r}: the calibrated gear model sets {k} = {fixed[k]!r}; "
+                "giving it again would undo the calibration (use CalibratedModel.spec_at for "
+                "a what-if)"
+            )
+    return pair, fixed, defaults or {"stiffness": "speed"}
 
 
 def _thermal_schedule_options(

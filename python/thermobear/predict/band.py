@@ -113,7 +113,8 @@ def predict(
     [`Diagnosis`][thermobear.Diagnosis] stands for its model). ``what``:
     ``"measured"`` (every quantity the model predicts), ``"stiffness"``,
     ``"temperatures"``, ``"growth"`` (axial growth, bearing displacements)
-    or ``"vibration"`` (a spindle's velocity RMS). ``conditions``: a frame of
+    or ``"vibration"`` (a spindle's velocity RMS); a gear model's transition
+    speeds (``"measured"``; rows of its conditions) are always sampled. ``conditions``: a frame of
     ``speed_rpm`` and the loads (``axial_n``, ``radial_n``; a spindle's
     ``preload_n``), a dict ``{"speeds_rpm": [...], "axial_n": ...,
     "radial_n": ...}`` (every combination) or None for the measured ones.
@@ -162,13 +163,27 @@ def predict(
     cond = condition_frame(cm.spec, conditions, measured if measured is not None else (
         measured_conditions(model)))  # fmt: skip
     quantities = quantities_for(cm.spec, what)
-    used = ("delta" if what in SMOOTH_WHATS else "sampling") if method == "auto" else method
+    used = _method_used(cm.spec, what, method)
     members = tuple(getattr(cm, "members", ()) or ())
     opts = (lv, used, samples, seed)
     if not members:
         return band_frame(cm, "", cond, quantities, *opts, engine=engine)
     frames = [band_frame(m, str(m.label), cond, quantities, *opts, engine=engine) for m in members]
     return pl.concat(frames + [envelope(frames, condition_columns(cm.spec))])
+
+
+def _method_used(spec: Any, what: str, method: str) -> str:
+    """The band method of ``method`` for ``what``: "auto" is the delta
+    method for the smooth outputs and sampling otherwise; a gear pair's
+    transition speeds (which jump with its inputs) are always sampled."""
+    if getattr(spec, "conditions", None) is not None:
+        if method == "delta":
+            raise ConfigError(
+                "invalid method = 'delta': a gear pair's transition speeds jump with its inputs; "
+                "'auto' or 'sampling'"
+            )
+        return "sampling"
+    return ("delta" if what in SMOOTH_WHATS else "sampling") if method == "auto" else method
 
 
 #: The most samples a sampled band takes (each is a model run).

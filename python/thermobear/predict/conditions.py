@@ -43,8 +43,17 @@ def is_spindle(spec: Any) -> bool:
 
 
 def condition_columns(spec: Any) -> tuple[str, ...]:
-    """The operating columns of the spec's conditions."""
+    """The operating columns of the spec's conditions (a spec that names
+    its own, as a gear pair's ``conditions``, gives those)."""
+    own = getattr(spec, "conditions", None)
+    if isinstance(own, tuple):
+        return own
     return ("speed_rpm", "preload_n") if is_spindle(spec) else ("speed_rpm", "axial_n", "radial_n")
+
+
+def _numeric(col: str) -> bool:
+    """Whether a condition column holds a number (its name ends in a unit)."""
+    return col.endswith(tuple(UNIT_SUFFIXES))
 
 
 def quantities_for(spec: Any, what: str) -> list[str]:
@@ -103,7 +112,14 @@ def condition_frame(spec: Any, conditions: Any, default: Any = None) -> polars.D
             "with speeds_rpm and the loads"
         )
     for c in cols:
+        if not _numeric(c):
+            continue
         v = df[c].to_numpy()
+        if c == "torque_n_m":  # a torque may be negative (coast) or null (the model's)
+            v = v[~np.isnan(v)]
+            if not np.all(np.isfinite(v)):
+                raise ConfigError(f"invalid conditions {c}: not finite")
+            continue
         if not np.all(np.isfinite(v)) or np.any(v < 0.0):
             bad = v[~np.isfinite(v) | (v < 0.0)][0]
             raise ConfigError(f"invalid conditions {c} = {bad}: finite and >= 0")
@@ -122,7 +138,11 @@ def _frame(cols: Sequence[str], df: polars.DataFrame) -> polars.DataFrame:
     missing = [c for c in cols if c not in df.columns]
     if missing:
         raise ConfigError(f"invalid conditions: no column {missing[0]} (give {', '.join(cols)})")
-    return df.select([pl.col(c).cast(pl.Float64) for c in cols])
+    keep = [pl.col(c) for c in ("comparison",) if c in df.columns and c not in cols]
+    return df.select(
+        [pl.col(c).cast(pl.Float64) if _numeric(c) else pl.col(c).cast(pl.Utf8) for c in cols]
+        + keep
+    )
 
 
 def _grid(cols: Sequence[str], spec: Mapping[str, Any]) -> polars.DataFrame:

@@ -120,14 +120,17 @@ def sweep_speeds(conditions: Any) -> np.ndarray:
 
 
 def _checked_options(
-    gear_options: Optional[Mapping[str, Any]], sweep_options: Optional[Mapping[str, Any]]
+    gear_options: Optional[Mapping[str, Any]],
+    sweep_options: Optional[Mapping[str, Any]],
+    gear_model: bool = False,
 ) -> tuple[dict, dict]:
     import inspect
 
     from ..gear.dynamics import bifurcation_set
 
     g, s = dict(gear_options or {}), dict(sweep_options or {})
-    for k in _OWN_GEAR_OPTIONS:
+    own = ("bearings",) if gear_model else _OWN_GEAR_OPTIONS
+    for k in own:
         if k in g:
             raise ConfigError(
                 f"invalid gear_options {k} = {g[k]!r}: a regime prediction puts the calibrated "
@@ -331,7 +334,11 @@ def predict_regimes(
     ``predict(model, "regimes", ...)`` (see the module
     ``thermobear.predict.regimes`` for the method).
 
-    ``model``: a calibrated bearing model; ``conditions``:
+    ``model``: a calibrated bearing model (the gear pair ``gear`` on its
+    bearings' thermal stiffness schedule), or a calibrated gear model (its
+    own pair with its calibrated inputs, in the stiffness case of
+    ``gear_options["stiffness"]`` or its own; the samples are of its
+    inputs); ``conditions``:
     ``{"speeds_rpm": [...]}`` (or a frame with ``speed_rpm``); ``level``:
     probability of the intervals; ``method``: ``"auto"`` or ``"sampling"``
     (regime labels are not smooth in the calibrated values: no delta
@@ -375,7 +382,7 @@ def predict_regimes(
         )
     pair = _checked_gear(model, gear, direction)
     speeds = sweep_speeds(conditions)
-    g, s = _checked_options(gear_options, sweep_options)
+    g, s = _checked_options(gear_options, sweep_options, sweeps.is_gear_spec(model.spec))
     run = (pair, g, s, direction)
     members = tuple(getattr(model, "members", ()) or ())
     targets = [(m, str(m.label)) for m in members] if members else [(model, "")]
@@ -391,12 +398,19 @@ def predict_regimes(
 
 
 def _checked_gear(model: Any, gear: Any, direction: str) -> Any:
-    """The gear pair (None: the seed pair), after checking ``direction``
-    and that ``model`` is a bearing model."""
+    """The gear pair (None: the seed pair; a calibrated gear model's own),
+    after checking ``direction`` and that ``model`` is a bearing or a gear
+    model."""
     from ..gear.pair import GearPair
 
     if direction not in _DIRECTIONS:
         raise ConfigError(f"invalid direction = {direction!r}: one of {', '.join(_DIRECTIONS)}")
+    if sweeps.is_gear_spec(model.spec):
+        if gear is not None:
+            raise ConfigError(
+                f"invalid gear = {gear!r}: a calibrated gear model brings its own pair"
+            )
+        return model.spec.gear
     pair = GearPair.preset("seed-electric-drive") if gear is None else gear
     if not isinstance(pair, GearPair):
         raise ConfigError(f"invalid gear = {gear!r}: a thermobear.GearPair")

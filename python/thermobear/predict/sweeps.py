@@ -17,9 +17,10 @@ if TYPE_CHECKING:
 
 
 class BearingAt:
-    """A calibrated bearing model at one vector of its calibrated values:
-    what ``GearSystem(bearings=...)`` takes of a calibrated model (the
-    hook ``_thermobear_model_``), for the spec at that vector."""
+    """A calibrated model at one vector of its calibrated values: what
+    ``GearSystem(bearings=...)`` (a bearing model) or ``GearSystem(...)``
+    (a gear model) takes of a calibrated model (the hook
+    ``_thermobear_model_``), for the spec at that vector."""
 
     def __init__(self, spec: Any) -> None:
         self.spec = spec
@@ -31,12 +32,22 @@ class BearingAt:
 
 
 def regime_system(model: Any, theta: np.ndarray, gear: Any, gear_options: Mapping) -> Any:
-    """The gear system on ``model``'s bearings at calibrated values
-    ``theta``, on their thermal stiffness schedule."""
+    """The gear system of ``model`` at calibrated values ``theta``: a
+    bearing model's bearings on their thermal stiffness schedule under
+    ``gear``; a gear model's own pair with those inputs (its stiffness
+    case unless ``gear_options`` names one)."""
     from ..gear.system import GearSystem
 
     spec = model.spec_at(theta) if len(theta) else model.spec
+    if is_gear_spec(spec):
+        return GearSystem(BearingAt(spec), **gear_options)
     return GearSystem(gear, bearings=BearingAt(spec), stiffness="thermal", **gear_options)
+
+
+def is_gear_spec(spec: Any) -> bool:
+    """Whether a model spec is a gear pair's (its conditions are a torque,
+    a stiffness case and a direction)."""
+    return hasattr(spec, "gear") and hasattr(spec, "system_options")
 
 
 def sweep_labels(

@@ -174,6 +174,11 @@ def sampled_quantiles(
         )
     y = np.vstack(runs)
     a = 0.5 * (1.0 - level)
+    if np.isnan(y).any():  # an output some samples lack (a gear's transition)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            lower, upper = np.nanquantile(y, [a, 1.0 - a], axis=0)
+            return y0, lower, upper, np.nanstd(y, axis=0, ddof=1)
     lower, upper = np.quantile(y, [a, 1.0 - a], axis=0)
     return y0, lower, upper, y.std(axis=0, ddof=1)
 

@@ -1,7 +1,10 @@
-"""The reproduction table: one row per result figure and table of the two
-seed studies, the paper's figure beside thermobear's counterpart written by
-``thermobear demo``, the paper's quoted numbers beside ours, a status and,
-where the result is not reproduced, the reason and the test that pins it.
+"""The reproduction table's figures: one row per result figure and table of
+the two seed studies, the paper's figure beside thermobear's counterpart
+written by ``thermobear demo``, the paper's quoted numbers beside ours in
+brief, the reason wherever they differ and the test that pins it. The
+status of a figure whose numbers (or claims) are in the number table
+follows from them (``reproduction_table.items``); the row's own status
+stands for a figure or table with neither (a parameter table).
 
 This module defines the row; the rows live in ``reproduction_seed_a`` and
 ``reproduction_seed_b`` (``ROWS``), and ``reproduction_table`` gathers
@@ -15,7 +18,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal, get_args
 
-Status = Literal["reproduced", "trend reproduced, different magnitude", "differs"]
+Status = Literal[
+    "reproduced",
+    "partly reproduced",
+    "trend reproduced, different magnitude",
+    "differs",
+    "not comparable",
+]
 Seed = Literal["A", "B"]
 
 #: The statuses, best first.
