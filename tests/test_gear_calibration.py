@@ -218,3 +218,25 @@ def test_predictions_of_a_calibrated_gear_model(synthetic_paper):
     assert got.height > 0 and (got["lower"] <= got["upper"]).all()
     with pytest.raises(tb.ConfigError, match="delta"):
         tb.predict(model, "measured", cond, method="delta")
+
+
+def test_bad_gear_calibration_input_is_named(synthetic_paper):
+    _, measured = synthetic_paper
+    with pytest.raises(tb.ConfigError, match="sweep_step"):
+        tb.GearModelSpec(PAIR, sweep_step_typo=10.0)
+    with pytest.raises(tb.ConfigError, match="stiffness"):
+        tb.GearModelSpec(PAIR, stiffness="warm")
+    with pytest.raises(tb.ConfigError, match="effects"):
+        tb.GearModelSpec(PAIR, effects=["centrifugal_force"])
+    spec = _spec()
+    with pytest.raises(tb.ConfigError, match="parameter = 'te_um'"):
+        tb.calibrate([(spec, measured)], ["te_um"], design_points=2)
+    with pytest.raises(tb.ConfigError, match="design_points"):
+        tb.calibrate([(spec, measured)], ["te_amplitude_um"], design_points=0)
+    with pytest.raises(tb.ConfigError, match="per_set"):
+        tb.calibrate([(spec, measured)], ["te_amplitude_um"], per_set=["te_amplitude_um"])
+    bearing = tb.BearingModelSpec(tb.Bearing.preset("6208"))
+    with pytest.raises(tb.ConfigError, match="gear pair cannot share"):
+        tb.calibrate([(spec, measured), (bearing, measured)], ["te_amplitude_um"])
+    with pytest.raises(tb.ConfigError, match="design_points"):
+        tb.calibrate([(bearing, measured)], ["lubrication_factor_f0"], design_points=8)
