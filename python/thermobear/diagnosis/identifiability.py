@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .setting import _predict
+from .setting import _predict_all
 from .statistics import _cosine
 
 
@@ -43,13 +43,9 @@ def _response(model, st, c, cond, base_options) -> dict:
     step = 1.0 if c.kind == "switch" else 0.05 * (c.upper - c.lower)
     v0 = 0.0 if c.kind == "switch" else c.null
     v1 = v0 + step if v0 + step <= c.upper else v0 - step
-    out = {}
-    for q in model.quantities:
-        qa = np.array([q] * cond.height)
-        p0 = _predict(model, st.apply(c, v0, base_options), cond, qa)
-        p1 = _predict(model, st.apply(c, v1, base_options), cond, qa)
-        out[q] = (p1 - p0) / (v1 - v0)
-    return out
+    p0 = _predict_all(model, st.apply(c, v0, base_options), cond)
+    p1 = _predict_all(model, st.apply(c, v1, base_options), cond)
+    return {q: (p1[q] - p0[q]) / (v1 - v0) for q in model.quantities}
 
 
 def suggest_measurement(model, st, ca, cb, fa, fb, df, base_options, envelope=None):
@@ -68,9 +64,10 @@ def suggest_measurement(model, st, ca, cb, fa, fb, df, base_options, envelope=No
     scale = float(fa @ fb / (fb @ fb)) if fb @ fb > 0 else 0.0
     best, where = -1.0, ("", float("nan"), float("nan"))
     table = model.quantities
+    every = _predict_all(model, st, cond)
     for q in table:
         typ, rel = table[q][3], table[q][4]
-        base = _predict(model, st, cond, np.array([q] * cond.height))
+        base = every[q]
         sig = np.abs(base) * typ if rel else np.full(cond.height, typ)
         d = np.abs(ra[q] - scale * rb[q]) / np.maximum(sig, 1e-300)
         i = int(np.argmax(d))

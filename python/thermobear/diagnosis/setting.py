@@ -49,6 +49,17 @@ class _Setting:
         return _Setting(self.effects, tuple(sorted(opts.items())), self.offsets)
 
 
+def _predict_all(model: ModelSpec, st: _Setting, cond: Any) -> dict[str, np.ndarray]:
+    """Every quantity of the model at each row of ``cond`` under a setting
+    (sensor offsets applied): one model run for them all."""
+    m = model.with_setting(st.effects, **dict(st.options))
+    allq = m.predict(cond)
+    out = {q: np.asarray(allq[q], dtype=float) for q in model.quantities}
+    for q, v, rel in st.offsets:
+        out[q] = out[q] * (1.0 + v) if rel else out[q] + v
+    return out
+
+
 def _predict(model: ModelSpec, st: _Setting, cond: Any, quantity: np.ndarray) -> np.ndarray:
     """Prediction of each measured row (its own quantity) under a setting."""
     m = model.with_setting(st.effects, **dict(st.options))

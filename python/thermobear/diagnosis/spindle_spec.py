@@ -128,6 +128,9 @@ SPINDLE_QUANTITIES: dict[str, tuple[str, float, tuple[float, float], float, bool
 _VIB = "velocity_rms_mm_s"
 #: The quantities of the rotor's forced response (computed on first access).
 _ROTOR = (_VIB, "x1_mm_s")
+#: The quantities computed only when asked for: the rotor's, and the total
+#: radial displacement (it needs the uncoupled state beside the coupled one).
+_LAZY = (*_ROTOR, "total_radial_displacement_um")
 PRELOAD_REGISTRIES.append(SPINDLE_QUANTITIES)  # spindle data state a preload_n
 
 #: Options of the spindle model and their bounds as candidates. Spin
@@ -475,8 +478,9 @@ class SpindleModelSpec(ModelSpec):
     def predict(self, conditions: polars.DataFrame) -> dict[str, np.ndarray]:
         """Every quantity of ``SPINDLE_QUANTITIES`` at each row of
         ``conditions`` (``speed_rpm`` and ``axial_n`` or ``preload_n``):
-        name -> array. The vibration is computed only when asked for (the
-        returned mapping evaluates it on first access)."""
+        name -> array. The vibration and the total radial displacement (which
+        needs the uncoupled state too) are computed only when asked for (the
+        returned mapping evaluates them on first access)."""
         sp = conditions["speed_rpm"].to_numpy().astype(float)
         radial = (
             conditions["radial_n"].to_numpy().astype(float)
@@ -492,13 +496,21 @@ class SpindleModelSpec(ModelSpec):
         col = "axial_n" if "axial_n" in conditions.columns else "preload_n"
         pre = conditions[col].to_numpy().astype(float)
         cells, inverse = np.unique(np.stack([pre, sp], axis=1), axis=0, return_inverse=True)
-        states = [self._row(float(p), float(v)) for p, v in cells]
-        out = {
-            q: (np.array([st[c] for st in states], dtype=float) * s)[inverse.reshape(-1)]
-            for q, (c, s, *_r) in SPINDLE_QUANTITIES.items()
-            if q not in _ROTOR
-        }
-        return _Predictions(out, lambda q: self._vibration_rows(q, sp, pre))
+        at = inverse.reshape(-1)
+
+        def column(states: list[dict], q: str) -> np.ndarray:
+            c, s = SPINDLE_QUANTITIES[q][0], SPINDLE_QUANTITIES[q][1]
+            return (np.array([st[c] for st in states], dtype=float) * s)[at]
+
+        states = [self._state(float(p), float(v))[0] for p, v in cells]
+        out = {q: column(states, q) for q in SPINDLE_QUANTITIES if q not in _LAZY}
+
+        def lazy(q: str) -> np.ndarray:
+            if q in _ROTOR:
+                return self._vibration_rows(q, sp, pre)
+            return column([self._row(float(p), float(v)) for p, v in cells], q)
+
+        return _Predictions(out, lazy)
 
     def _vibration_rows(self, quantity: str, sp: np.ndarray, pre: np.ndarray) -> np.ndarray:
         """The rotor's ``quantity`` (velocity RMS, or the 1X amplitude) at
@@ -537,14 +549,15 @@ def runout_velocity_rms_mm_s(velocity_rms_mm_s: Any, speed_rpm: Any, runout_um: 
 
 
 class _Predictions(dict):
-    """The predictions; the rotor's columns are computed on first access."""
+    """The predictions; the lazy columns (``_LAZY``) are computed on first
+    access."""
 
     def __init__(self, values: dict, vibration: Any) -> None:
         super().__init__(values)
         self._vibration = vibration
 
     def __missing__(self, key: str) -> np.ndarray:
-        if key not in _ROTOR:
+        if key not in _LAZY:
             raise KeyError(key)
         self[key] = self._vibration(key)
         return self[key]
