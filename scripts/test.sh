@@ -11,5 +11,5 @@ echo "== build + install the Python package with test extras"
 python3 -m pip install --quiet --upgrade pip >/dev/null 2>&1 || true
 python3 -m pip install --quiet ".[test]"
 
-echo "== pytest"
-python3 -m pytest -q tests
+echo "== pytest (two worker processes: the suite is mostly single-threaded Python)"
+python3 -m pytest -q -n 2 --durations=25 tests

@@ -165,3 +165,10 @@ pub use bearing::{Bearing, BearingGeometry, BearingType};
 pub use effects::{Effect, EffectSet};
 pub use error::{Error, Result};
 pub use materials::Material;
+
+/// The examples of the docs page "Using the Rust crate" (`docs/rust.md`),
+/// compiled and run as doctests, so that the page cannot drift from the
+/// crate. Only the doctest build sees this item.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/rust.md")]
+pub struct RustPageExamples;

@@ -22,6 +22,11 @@ def _config(name: str) -> str:
         return str(p)
 
 
+def _paper(name: str) -> str:
+    with resources.as_file(resources.files("thermobear.studies.papers").joinpath(name)) as p:
+        return str(p)
+
+
 def _runs(tmp: Path) -> dict[str, list[str]]:
     """One real, small run of every subcommand."""
     grid = tmp / "grid.toml"
@@ -54,6 +59,18 @@ def _runs(tmp: Path) -> dict[str, list[str]]:
             "--out",
             str(tmp / "cal"),
         ],  # fmt: skip
+        "predict": [
+            "predict",
+            _paper("seed_a_bearing_model.json"),
+            "--what",
+            "temperatures",
+            "--speeds",
+            "5000",
+            "--loads",
+            "300",
+            "--out",
+            str(tmp / "pred"),
+        ],
         "study": ["study", str(grid), "--out", str(tmp / "study"), "--no-progress"],
         "validate": ["validate", "skf_reference_speed_60", "--out", str(tmp / "val")],
     }

@@ -130,7 +130,7 @@ def test_a_stiffness_band_reads_in_newton_per_micrometre(single, ax):
 
 
 def test_under_a_tie_each_member_has_its_curve_inside_the_envelope(tie, ax):
-    pred = tb.predict(tie, "temperatures", SPEEDS)
+    pred = tb.predict(tie, "temperatures", SPEEDS, band="envelope")
     tb.plot.prediction_band(pred, TO, ax=ax)
     env = pred.filter((pl.col("quantity") == TO) & (pl.col("member") == "envelope"))
     env = env.sort("speed_rpm")

@@ -77,7 +77,8 @@ def test_the_frame_is_tidy_with_units_and_methods(base):
     )
     df = tb.predict(cm, "measured", {"speeds_rpm": [4000.0, 12000.0], "axial_n": 300.0})
     assert df.columns == ["speed_rpm", "axial_n", "radial_n", "quantity", "value", "lower",
-                          "upper", "unit", "member", "method"]  # fmt: skip
+                          "upper", "unit", "member", "method", "weight", "speed_beyond_measured",
+                          "axial_load_beyond_measured", "radial_load_beyond_measured"]  # fmt: skip
     assert df.height == 2 * len(base.quantities)
     assert set(df["member"]) == {""} and set(df["method"]) == {"delta"}
     units = dict(zip(df["quantity"], df["unit"], strict=True))
@@ -126,7 +127,7 @@ def tie(base) -> CalibratedModel:
 
 def test_under_a_tie_the_band_contains_each_members_prediction(tie):
     cond = {"speeds_rpm": [2000.0, 8000.0, 14000.0, 18000.0], "axial_n": 300.0}
-    df = tb.predict(tie, "temperatures", cond)
+    df = tb.predict(tie, "temperatures", cond, band="envelope")
     labels = [m.label for m in tie.members]
     assert df["member"].unique(maintain_order=True).to_list() == [*labels, "envelope"]
     env = df.filter(pl.col("member") == "envelope").sort("quantity", "speed_rpm")

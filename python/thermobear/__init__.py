@@ -60,9 +60,11 @@ from .diagnosis import (
     spindle_candidates,
 )
 from .errors import (
+    AmbiguousModelWarning,
     ConfigError,
     ConvergenceError,
     DataError,
+    ExtrapolationWarning,
     Interrupted,
     PlausibilityWarning,
     ThermalRunawayError,
@@ -140,9 +142,11 @@ __all__ = [
     "plot",
     "validation",
     # errors
+    "AmbiguousModelWarning",
     "ConfigError",
     "ConvergenceError",
     "DataError",
+    "ExtrapolationWarning",
     "Interrupted",
     "PlausibilityWarning",
     "ThermalRunawayError",

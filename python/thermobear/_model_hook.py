@@ -20,18 +20,32 @@ accepted in place of the machine by the entry points decorated with
 * the load scales (``axial_load_scale``, ``radial_load_scale``,
   ``preload_scale``, and per level ``<scale>@<N>``) multiply the stated
   load arguments of the call (``axial_n``, ``radial_n``, ``preload_n``), as
-  the calibration applied them to the measured conditions."""
+  the calibration applied them to the measured conditions, and one by one
+  the stated loads of a sequence argument (``preloads_n``,
+  ``radial_loads_n``);
+* a model with several members (a tie or an "unresolved" verdict: one
+  member per explanation, ``members``) stands for one of them: the one
+  ``member=`` names (its index, its label, or the part of its label after
+  ``": "``), or, without ``member=``, the first, with an
+  [`AmbiguousModelWarning`][thermobear.AmbiguousModelWarning] naming the
+  members and the one used. ``member=`` on a model without members, or on
+  a machine that is no calibrated model, is a
+  [`ConfigError`][thermobear.ConfigError]."""
 
 from __future__ import annotations
 
 import functools
 import inspect
+import warnings
 from typing import Any, Callable, Collection, Optional, Protocol, TypeVar
 
-from .errors import ConfigError
+from .errors import AmbiguousModelWarning, ConfigError
 
 #: The name of the hook method.
 MODEL_HOOK = "_thermobear_model_"
+
+#: The keyword that picks the member of a model with several.
+MEMBER = "member"
 
 #: Load-scale option -> the stated-load argument it multiplies.
 LOAD_SCALES = {
@@ -39,6 +53,10 @@ LOAD_SCALES = {
     "radial_load_scale": "radial_n",
     "preload_scale": "preload_n",
 }
+
+#: Sequence argument of several stated loads -> the load-scale option that
+#: multiplies each of them.
+LOAD_SEQUENCES = {"preloads_n": "preload_scale", "radial_loads_n": "radial_load_scale"}
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -55,12 +73,63 @@ def is_calibrated(obj: Any) -> bool:
     return hasattr(obj, MODEL_HOOK) and not isinstance(obj, type)
 
 
-def unpack_model(obj: Any) -> tuple[Any, dict[str, Any]]:
-    """``(machine, options)`` of a calibrated model; any other object is
-    returned as it is with no options."""
+def member_of(obj: Any, member: Any = None) -> Any:
+    """The model that stands for one machine: ``obj`` itself without
+    members; else its member ``member`` (an index, a label, or the part of
+    a label after ``": "`` when only one member's label ends so), or, with
+    ``member`` None, the first with an
+    [`AmbiguousModelWarning`][thermobear.AmbiguousModelWarning] naming the
+    members. A ``member`` that matches none, or given for a model without
+    members, raises [`ConfigError`][thermobear.ConfigError]."""
+    members = tuple(getattr(obj, "members", ()) or ())
+    if not members:
+        if member is not None:
+            raise ConfigError(
+                f"invalid member = {member!r}: the model has no members (only a tie or an "
+                '"unresolved" model has one per explanation)'
+            )
+        return obj
+    labels = [str(getattr(m, "label", i)) for i, m in enumerate(members)]
+    listed = ", ".join(f"{i}: {lab!r}" for i, lab in enumerate(labels))
+    if member is None:
+        from ._limits import _outside_stacklevel
+
+        kind = getattr(obj, "kind", "calibrated")
+        warnings.warn(
+            f"a {kind} model with {len(members)} members ({listed}) stands for one machine: "
+            f"member 0 ({labels[0]!r}) is used; pass member=<index or label> to choose "
+            "(or pass the member itself, model.members[i])",
+            AmbiguousModelWarning,
+            stacklevel=_outside_stacklevel(),
+        )
+        return members[0]
+    if isinstance(member, int) and not isinstance(member, bool):
+        if -len(members) <= member < len(members):
+            return members[member]
+    elif isinstance(member, str):
+        if member in labels:
+            return members[labels.index(member)]
+        tails = [i for i, lab in enumerate(labels) if lab.split(": ", 1)[-1] == member]
+        if len(tails) == 1:
+            return members[tails[0]]
+    raise ConfigError(
+        f"invalid member = {member!r}: an index 0..{len(members) - 1} or a label of {listed}"
+    )
+
+
+def unpack_model(obj: Any, member: Any = None) -> tuple[Any, dict[str, Any]]:
+    """``(machine, options)`` of a calibrated model (of its member
+    ``member``: ``member_of``); any other object is returned as it is with
+    no options (``member`` must then be None)."""
     if not is_calibrated(obj):
+        if member is not None:
+            raise ConfigError(
+                f"invalid member = {member!r}: only a calibrated model (a tie or an "
+                '"unresolved" one) has members; the machine given is a '
+                f"{type(obj).__name__}"
+            )
         return obj, {}
-    machine, options = getattr(obj, MODEL_HOOK)()
+    machine, options = getattr(member_of(obj, member), MODEL_HOOK)()
     return machine, dict(options)
 
 
@@ -104,7 +173,21 @@ def merge_options(
             scale in options or any(k.startswith(scale + "@") for k in options)
         ):
             out[arg] = scaled_load(options, scale, float(out[arg]))
+    for arg, scale in LOAD_SEQUENCES.items():
+        if out.get(arg) is not None and (
+            scale in options or any(k.startswith(scale + "@") for k in options)
+        ):
+            out[arg] = _scaled_sequence(options, scale, out[arg])
     return out
+
+
+def _scaled_sequence(options: dict[str, Any], scale: str, values: Any) -> Any:
+    """Each stated load of ``values`` scaled (``scaled_load``); values
+    that are not numbers are left for the call's own check to name."""
+    try:
+        return [scaled_load(options, scale, float(x)) for x in values]
+    except (TypeError, ValueError):
+        return values
 
 
 def takes_calibrated(
@@ -114,19 +197,25 @@ def takes_calibrated(
     calibrated model there is unpacked (``merge_options``). The options
     taken are those the function has a named parameter for, plus
     ``extra(explicit)`` (names it passes on through ``**kwargs``;
-    ``explicit``: the arguments the caller gave, by name)."""
+    ``explicit``: the arguments the caller gave, by name). The entry point
+    also takes a keyword ``member`` (``member_of``): which member of a
+    model with several stands for the machine."""
 
     def decorate(fn: F) -> F:
         sig = inspect.signature(fn)
         params = list(sig.parameters.values())
         named = {p.name for p in params[1:] if p.kind is not p.VAR_KEYWORD}
         var_kw = next((p.name for p in params if p.kind is p.VAR_KEYWORD), None)
+        own_member = MEMBER in sig.parameters
 
         @functools.wraps(fn)
         def wrapper(*args: Any, **kwargs: Any) -> Any:
+            member = None if own_member else kwargs.pop(MEMBER, None)
             if not args or not is_calibrated(args[0]):
+                if member is not None:
+                    unpack_model(args[0] if args else None, member)  # names the mistake
                 return fn(*args, **kwargs)
-            machine, options = unpack_model(args[0])
+            machine, options = unpack_model(args[0], member)
             bound = sig.bind_partial(machine, *args[1:], **kwargs)
             explicit = dict(bound.arguments)
             explicit.pop(params[0].name)
@@ -136,6 +225,16 @@ def takes_calibrated(
             merged = merge_options(options, explicit, accepted)
             return fn(machine, **merged)
 
+        if not own_member:  # the signature shows the keyword the wrapper takes
+            extra_param = inspect.Parameter(
+                MEMBER,
+                inspect.Parameter.KEYWORD_ONLY,
+                default=None,
+                annotation="Union[int, str, None]",
+            )
+            shown = [p for p in params if p.kind is not p.VAR_KEYWORD] + [extra_param]
+            shown += [p for p in params if p.kind is p.VAR_KEYWORD]
+            wrapper.__signature__ = sig.replace(parameters=shown)  # type: ignore[attr-defined]
         return wrapper  # type: ignore[return-value]
 
     return decorate

@@ -49,6 +49,26 @@ def _bounds(lo: float, hi: float, open_lo: bool) -> str:
     return f"a finite number in {'(' if open_lo else '['}{lo:g}, {hi:g}]"
 
 
+def close_name(value: Any, known: Iterable[Any]) -> Optional[str]:
+    """The one of ``known`` closest to ``value`` when it is close (a
+    misspelling: ``difflib`` ratio at least 0.6, case ignored), else None."""
+    import difflib
+
+    if not isinstance(value, str):
+        return None
+    by_lower = {str(k).lower(): str(k) for k in known}
+    near = difflib.get_close_matches(value.lower(), list(by_lower), n=1, cutoff=0.6)
+    return by_lower[near[0]] if near else None
+
+
+def did_you_mean(value: Any, known: Iterable[Any]) -> str:
+    """``"; did you mean <name>?"`` for a ``value`` close to one of
+    ``known`` (see ``close_name``), else ``""``: the tail of an error
+    about an unknown name."""
+    near = close_name(value, known)
+    return f"; did you mean {near}?" if near is not None and near != value else ""
+
+
 def fail(name: str, value: Any, accepted: str) -> ConfigError:
     """The error for ``name = value``, saying what is ``accepted``."""
     return ConfigError(f"invalid {name} = {_shown(value)}: must be {accepted}")
@@ -125,7 +145,9 @@ def choice(name: str, value: Any, options: Iterable[Any]) -> Any:
     if isinstance(value, (str, int, float, type(None))) and not isinstance(value, bool):
         if value in opts:  # plain values only: an array's == is element-wise
             return value
-    raise fail(name, value, "one of " + ", ".join(repr(o) for o in opts))
+    raise fail(
+        name, value, "one of " + ", ".join(repr(o) for o in opts) + did_you_mean(value, opts)
+    )
 
 
 def text(name: str, value: Any) -> str:
@@ -216,6 +238,7 @@ def keys_known(name: str, given: Sequence[str], known: Sequence[str]) -> None:
         if k not in known:
             raise ConfigError(
                 f"invalid {name} = {k!r}: not a known argument (known: {', '.join(known)})"
+                + did_you_mean(k, known)
             )
 
 

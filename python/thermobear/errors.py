@@ -14,6 +14,12 @@ above the number of available cores was capped to it.
 that an input or a result lies past what real machines do (the limits of
 [`thermobear.plausibility`][thermobear.plausibility], listed with their
 sources in the docs page "Limits"); the result is still returned.
+
+``ExtrapolationWarning`` (a ``UserWarning``) says that a prediction of a
+calibrated model reaches far past the conditions it was calibrated at;
+``AmbiguousModelWarning`` (a ``UserWarning``) says that a calibrated model
+with several members (a tie, an "unresolved" verdict) stood for one machine
+and which member was used.
 """
 
 from ._native import (
@@ -36,10 +42,29 @@ class PlausibilityWarning(UserWarning):
     the limits with [`set_limits`][thermobear.set_limits]."""
 
 
+class ExtrapolationWarning(UserWarning):
+    """A prediction of a calibrated model at conditions far past those it
+    was calibrated at (more than ``MAX_BEYOND_MEASURED`` of
+    ``thermobear.predict.extrapolation`` beyond the measured speeds or
+    loads; the docs page "Limits" gives the rule). The prediction is still
+    returned, with the distance in its ``*_beyond_measured`` columns.
+    Silence it with ``warnings.filterwarnings("ignore",
+    category=thermobear.ExtrapolationWarning)``."""
+
+
+class AmbiguousModelWarning(UserWarning):
+    """A calibrated model with several members (a tie or an "unresolved"
+    verdict: one member per explanation) stood for one machine without
+    ``member=``: the message names the members and the one used (the
+    first). Pass ``member=`` (a label or an index) to choose."""
+
+
 __all__ = [
+    "AmbiguousModelWarning",
     "ConfigError",
     "ConvergenceError",
     "DataError",
+    "ExtrapolationWarning",
     "Interrupted",
     "PlausibilityWarning",
     "ThermalRunawayError",

@@ -29,6 +29,36 @@ class Entry(NamedTuple):
 _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("speed_rpm", "rpm", "n", "shaft (inner-ring) speed"),
     ("speeds_rpm", "rpm", "n", "shaft speeds of a sweep"),
+    (
+        "reference_speed_rpm",
+        "rpm",
+        "n_0",
+        "speed at which a relative displacement is zero (the probe's zero)",
+    ),
+    (
+        "speed_beyond_measured",
+        "1",
+        "e_n",
+        "how far a prediction's speed lies outside the measured ones, over the top one",
+    ),
+    (
+        "axial_load_beyond_measured",
+        "1",
+        "e_Fa",
+        "how far a prediction's axial load lies outside the measured ones, over the largest",
+    ),
+    (
+        "radial_load_beyond_measured",
+        "1",
+        "e_Fr",
+        "how far a prediction's radial load lies outside the measured ones, over the largest",
+    ),
+    (
+        "preload_beyond_measured",
+        "1",
+        "e_Fp",
+        "how far a prediction's preload lies outside the measured ones, over the largest",
+    ),
     ("axial_n", "N", "F_a", "external axial load on a single bearing"),
     ("radial_n", "N", "F_r", "external radial load on a bearing (along x)"),
     ("moment_n_m", "N m", "M", "tilting moment on the inner ring (about y)"),
@@ -150,6 +180,12 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("spring_rate_n_per_um", "N/um", "k_s", "preload spring rate"),
     ("radial_displacement_um", "um", "delta_r", "radial displacement of the inner ring"),
     ("axial_displacement_um", "um", "delta_a", "axial displacement of the inner ring"),
+    (
+        "axial_displacement_change_um",
+        "um",
+        "delta_a - delta_a(n_0)",
+        "change of the inner ring's axial displacement from the reference speed (zeroed there)",
+    ),
     ("tilt_rad", "rad", "theta", "tilt of the inner ring"),
     ("misalignment_rad", "rad", "theta_0", "inner-ring tilt held fixed (None: free)"),
     (
@@ -221,6 +257,18 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ),
     ("spring_compression_um", "um", "u_s", "compression of the preload spring"),
     ("axial_growth_um", "um", "u_a", "axial thermal growth of the spindle shaft"),
+    (
+        "axial_growth_change_um",
+        "um",
+        "u_a - u_a(n_0)",
+        "change of the spindle's axial growth from the reference speed (a probe zeroed there)",
+    ),
+    (
+        "radial_displacement_change_um",
+        "um",
+        "delta_r - delta_r(n_0)",
+        "change of the radial displacement from the reference speed (a probe zeroed there)",
+    ),
     ("ball_growth_um", "um", "dD", "thermal growth of the ball diameter"),
     (
         "rear_thermal_radial_displacement_um",
@@ -427,6 +475,24 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("spin_heat_w", "W", "H_s", "spin friction heat"),
     ("churning_heat_w", "W", "H_d", "ball drag (churning) heat in the oil-air mixture"),
     ("extra_heat_w", "W", "H_x", "extra heat at the bearing beyond the modelled friction"),
+    (
+        "unknown_heat_linear_w",
+        "W",
+        "a_H",
+        "unknown heat source: linear coefficient a of H = max(0, a x + b x^2), x = n / n_ref",
+    ),
+    (
+        "unknown_heat_quadratic_w",
+        "W",
+        "b_H",
+        "unknown heat source: quadratic coefficient b of H = max(0, a x + b x^2)",
+    ),
+    (
+        "unknown_heat_reference_rpm",
+        "rpm",
+        "n_ref",
+        "unknown heat source: reference speed of its speed law (the highest measured speed)",
+    ),
     ("bearing_heat_w", "W", "H_b", "heat of all spindle bearings"),
     ("front_bearing_heat_w", "W", "H_b,front", "heat of one front bearing"),
     ("front_spin_heat_w", "W", "H_s,front", "spin heat of one front bearing"),

@@ -10,9 +10,11 @@ import math
 from pathlib import Path
 from typing import Any, Optional, Sequence, Union
 
+from .. import _validate as val
 from .._native import __version__
 from ..diagnosis import calibrate
 from ..diagnosis.measurements import prepare_measurements
+from ..errors import ConfigError
 from .data import located_data_errors, read_measurements
 from .diagnose import baseline, with_operating_loads
 
@@ -42,6 +44,65 @@ def calibration_summary(cal: Any) -> str:
         )
     lines += [f"  note: {n}" for n in cal.notes]
     return "\n".join(lines)
+
+
+def calibratable(spec: Any) -> list[Any]:
+    """The candidates of a baseline spec that ``calibrate --parameters``
+    accepts: those of kind "parameter" against every quantity it predicts
+    (so every sensor offset and gain term)."""
+    return [c for c in spec.candidate_list(sorted(spec.quantities)) if c.kind == "parameter"]
+
+
+def check_parameters(spec: Any, names: Sequence[str]) -> None:
+    """Refuse a name of ``--parameters`` (or ``--per-set``) that the
+    baseline cannot calibrate, naming a close one."""
+    known = [c.name for c in calibratable(spec)]
+    for n in names:
+        if n not in known:
+            raise ConfigError(
+                f"invalid parameters = {n!r}: not a calibratable parameter of the baseline"
+                f"{val.did_you_mean(n, known)} (thermobear effects --parameters lists them)"
+            )
+
+
+def parameter_baselines(
+    system: Union[str, Path, None] = None, spindle: Optional[str] = None
+) -> list[tuple[str, Any]]:
+    """The baselines whose calibratable names ``thermobear effects
+    --parameters`` lists, each with its spec: the system description
+    ``system`` or the spindle preset ``spindle`` when given, else a bearing
+    (``--model``: the default bearing baseline) and each spindle preset
+    (``--spindle``)."""
+    from ..bearing import Bearing
+    from ..diagnosis import BearingModelSpec, SpindleModelSpec
+    from ..spindle import Spindle
+
+    if system is not None or spindle is not None:
+        spec, _ = baseline(system, spindle)
+        return [("--model" if system is not None else "--spindle", spec)]
+    out: list[tuple[str, Any]] = [("--model", BearingModelSpec(Bearing.preset("7008C")))]
+    out += [("--spindle", SpindleModelSpec(Spindle.preset(n))) for n in Spindle.preset_names()]
+    return out
+
+
+def parameter_lines(
+    system: Union[str, Path, None] = None, spindle: Optional[str] = None
+) -> list[str]:
+    """``thermobear effects --parameters``: one line per name
+    ``thermobear calibrate --parameters`` accepts -- name, the baseline
+    options that take it (``--model``, ``--spindle``), bounds with the unit,
+    description -- for the baselines of ``parameter_baselines``, in the
+    order of the first baseline that has it."""
+    rows: dict[str, tuple[Any, list[str]]] = {}
+    for label, spec in parameter_baselines(system, spindle):
+        for c in calibratable(spec):
+            rows.setdefault(c.name, (c, []))[1].append(label)
+    lines = []
+    for name, (c, where) in rows.items():
+        base = ", ".join(dict.fromkeys(where))
+        bounds = f"{c.lower:g}..{c.upper:g} {c.unit}"
+        lines.append(f"{name:44s} {base:18s} {bounds:20s} {c.description}")
+    return lines
 
 
 def _labels(files: Sequence[Path]) -> list[str]:
@@ -82,6 +143,7 @@ def calibrate_files(
     from ..studies.output import write_table
 
     spec, op = baseline(system, spindle, without)
+    check_parameters(spec, [*parameters, *per_set])
     paths = [Path(m) for m in measured]
     labels = _labels(paths)
     sets: dict[str, tuple[Any, Any]] = {}

@@ -22,6 +22,19 @@ _NOT_NUMERIC = re.compile(r"invalid (\w+): not numeric")
 _COLUMN_VALUE = re.compile(r"invalid (\w+) = ([^:]+):")
 _MISSING = re.compile(r"missing column")
 
+#: Advice of the Python API in a data error -> its command-line form (the
+#: commands read a file; they have no ``duplicates`` option).
+CLI_ADVICE = {
+    'or load with duplicates="mean" to average them': "or average them in the file",
+}
+
+
+def cli_advice(message: str) -> str:
+    """``message`` with the Python API's advice given as the command line's."""
+    for python, cli in CLI_ADVICE.items():
+        message = message.replace(python, cli)
+    return message
+
 
 def read_measurements(path: Path) -> polars.DataFrame:
     """The table of a measurement file (CSV, ``#`` comment lines, or
@@ -129,7 +142,7 @@ def data_error_at(error: DataError, path: Path) -> DataError:
     attributes."""
     if getattr(error, "path", None) is not None:
         return error
-    message = " ".join(str(error).split())
+    message = cli_advice(" ".join(str(error).split()))
     line: Optional[int] = None
     row: Optional[int] = None
     column: Optional[str] = None
@@ -156,11 +169,15 @@ def data_error_at(error: DataError, path: Path) -> DataError:
 @contextmanager
 def located_data_errors(path: Optional[Path]) -> Iterator[None]:
     """Re-raise a ``DataError`` raised inside the block naming the
-    measurement file ``path`` (see ``data_error_at``); nothing added
-    when ``path`` is None."""
+    measurement file ``path`` (see ``data_error_at``); no location added
+    when ``path`` is None. The Python API's advice is given as the command
+    line's (``cli_advice``)."""
     try:
         yield
     except DataError as e:
         if path is None:
-            raise
+            text = str(e)
+            if cli_advice(text) == text:
+                raise
+            raise type(e)(cli_advice(text)) from None
         raise data_error_at(e, path) from None

@@ -6,6 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Optional, Sequence, Union
 
+from .. import _validate as val
 from .. import plot
 from ..config import located_config_errors
 from ..diagnosis import BearingModelSpec, Diagnosis, SpindleModelSpec, diagnose, model_from_toml
@@ -17,6 +18,31 @@ from .data import located_data_errors, read_measurements
 #: ``holdout`` of ``diagnose_files`` that picks the highest speeds when
 #: the data hold three or more distinct speeds, and no hold-out otherwise.
 AUTO_HOLDOUT = "auto"
+
+#: The file of the diagnosis' calibrated model in the ``--out`` folder.
+MODEL_FILE = "calibrated_model.json"
+
+#: The Python advice of ``Diagnosis.summary`` and its command-line form.
+_PYTHON_VERBOSE = "summary(verbose=True)"
+_CLI_VERBOSE = "rerun with --verbose"
+
+
+def cli_summary(d: Diagnosis, verbose: bool = False) -> str:
+    """The diagnosis' summary as the command line prints it: its advice
+    to see more given as the option (``--verbose``), not the Python call."""
+    return str(d.summary(verbose=verbose)).replace(_PYTHON_VERBOSE, _CLI_VERBOSE)
+
+
+def spindle_preset(name: str) -> Spindle:
+    """The spindle preset ``name`` (``--spindle``); a ``ConfigError`` that
+    lists the presets and names a close one."""
+    known = Spindle.preset_names()
+    if name not in known:
+        raise ConfigError(
+            f"invalid spindle = {name!r}: not a spindle preset (known: {', '.join(known)})"
+            f"{val.did_you_mean(name, known)}"
+        )
+    return Spindle.preset(name)
 
 
 def baseline(
@@ -30,7 +56,14 @@ def baseline(
     if system is not None and spindle is not None:
         raise ConfigError("invalid baseline: give a system description (--model) or --spindle")
     if spindle is not None:
-        full = SpindleModelSpec(Spindle.preset(spindle))
+        full = SpindleModelSpec(spindle_preset(spindle))
+        known = [*full._known, "thermal_displacement"]
+        for w in without:
+            if w not in known:
+                raise ConfigError(
+                    f"invalid without = {w!r}: not an effect of the baseline "
+                    f"({', '.join(known)}){val.did_you_mean(w, known)}"
+                )
         drop = set(full._expand(list(without))) if without else set()
         return SpindleModelSpec(
             full.spindle, effects=[e for e in full.effects if e not in drop]
@@ -43,7 +76,7 @@ def baseline(
             if w not in full_b.effects:
                 raise ConfigError(
                     f"invalid without = {w!r}: not an effect of the baseline "
-                    f"({', '.join(full_b.effects)})"
+                    f"({', '.join(full_b.effects)}){val.did_you_mean(w, full_b.effects)}"
                 )
         effects = [e for e in full_b.effects if e not in set(without)]
         return BearingModelSpec(full_b.bearing, effects=effects, **full_b.options), op
@@ -81,7 +114,9 @@ def diagnose_files(
     ``holdout`` as [`thermobear.diagnose`][thermobear.diagnose] takes them (``"auto"``: the
     highest speeds with three or more distinct speeds, else none); write
     tables (gap, audit, screening, points) and figures into ``out`` when
-    given."""
+    given, with the diagnosis' calibrated model (``calibrated_model.json``,
+    [`CalibratedModel.load`][thermobear.CalibratedModel.load] reads it back,
+    ``thermobear predict`` takes it)."""
     import polars as pl
 
     spec, op = baseline(system, spindle, without)
@@ -106,4 +141,5 @@ def diagnose_files(
         for i, q in enumerate(sorted(set(d.points["quantity"].to_list()))):
             files.append(save_figure(plot.diagnosis_fit(d, q), out, f"diagnosis_fit_{i}"))
         files.append(save_figure(plot.diagnosis_residuals(d), out, "diagnosis_residuals"))
+        files.append(d.model.save(out / MODEL_FILE))
     return d, files

@@ -39,7 +39,8 @@ exit status:
        description, a solver that did not converge); one line on stderr,
        "thermobear: error: FILE:LINE: key KEY: ..." naming the file, the line
        and the key or column at fault (--debug adds the traceback)
-  2    usage error (unknown option, missing or malformed argument)
+  2    usage error (unknown option, missing or malformed argument, an option
+       that does not fit the model given)
   130  interrupted (Ctrl-C)
   141  the reader of the output closed the pipe (e.g. "| head -1")
 """
@@ -66,12 +67,16 @@ def _threads_arg(text: str) -> int:
 def _formats_arg(text: str) -> tuple[str, ...]:
     """``--format``: a comma list of figure formats (png, pdf, svg)."""
     from ..errors import ConfigError
-    from ..studies.output import parse_formats
+    from ..studies.output import FIGURE_FORMATS, parse_formats
 
     try:
         return parse_formats(text)
     except ConfigError as e:
-        raise argparse.ArgumentTypeError(str(e)) from None
+        from .._validate import did_you_mean
+
+        bad = [f.strip().lower() for f in text.split(",") if f.strip()]
+        near = next((t for t in (did_you_mean(b, FIGURE_FORMATS) for b in bad) if t), "")
+        raise argparse.ArgumentTypeError(str(e) + near) from None
 
 
 def _dpi_arg(text: str) -> float:
@@ -108,8 +113,11 @@ def _holdout_arg(text: str) -> Any:
     try:
         frac = float(t)
     except ValueError:
+        from .._validate import did_you_mean
+
+        near = did_you_mean(t, ("auto", "highest_speeds", "none"))
         raise argparse.ArgumentTypeError(
-            f"invalid holdout: {text!r} (highest_speeds, none, a fraction, or run:LABEL,...)"
+            f"invalid holdout: {text!r} (highest_speeds, none, a fraction, or run:LABEL,...)" + near
         ) from None
     if not 0.0 < frac < 1.0:
         raise argparse.ArgumentTypeError(f"invalid holdout: {text!r} (a fraction in (0, 1))")
@@ -176,6 +184,15 @@ def _cmd_presets(args: argparse.Namespace) -> int:
 def _cmd_effects(args: argparse.Namespace) -> int:
     from ..diagnosis import effect_registry
 
+    if args.parameters:
+        from .calibrate import parameter_lines
+
+        print("\n".join(parameter_lines(args.model, args.spindle)))
+        return EXIT_OK
+    if args.model is not None or args.spindle is not None:
+        from .predict import UsageError
+
+        raise UsageError("--model and --spindle go with --parameters")
     for r in effect_registry().iter_rows(named=True):
         bounds = (
             "on/off"
@@ -187,7 +204,7 @@ def _cmd_effects(args: argparse.Namespace) -> int:
 
 
 def _cmd_diagnose(args: argparse.Namespace) -> int:
-    from .diagnose import diagnose_files
+    from .diagnose import cli_summary, diagnose_files
 
     out = Path(args.out) if args.out else None
     d, files = diagnose_files(
@@ -199,7 +216,7 @@ def _cmd_diagnose(args: argparse.Namespace) -> int:
         candidates=args.candidates,
         holdout=args.holdout,
     )
-    print(d.summary())
+    print(cli_summary(d, verbose=args.verbose))
     if out is not None:
         print(f"thermobear diagnose: {len(files)} files written to {out.resolve()}")
     return EXIT_OK
@@ -223,6 +240,27 @@ def _cmd_calibrate(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _cmd_predict(args: argparse.Namespace) -> int:
+    from .predict import predict_files
+
+    out = Path(args.out)
+    _, files = predict_files(
+        Path(args.model),
+        args.what,
+        args.speeds,
+        out,
+        loads_n=args.loads,
+        preloads_n=args.preloads,
+        level=args.level,
+        member=args.member,
+        band=args.band,
+        formats=args.format,
+        dpi=args.dpi,
+    )
+    print(f"thermobear predict: {len(files)} files written to {out.resolve()}")
+    return EXIT_OK
+
+
 def _cmd_study(args: argparse.Namespace) -> int:
     from .study import run_study_file
 
@@ -239,8 +277,17 @@ def _cmd_study(args: argparse.Namespace) -> int:
 
 
 def _cmd_validate(args: argparse.Namespace) -> int:
+    from .._validate import did_you_mean
+    from ..errors import ConfigError
+    from ..validation import set_names
     from .validate import validate_command
 
+    known = set_names()
+    for name in args.sets:
+        if name not in known:
+            raise ConfigError(
+                f"invalid set = {name!r}: known: {', '.join(known)}{did_you_mean(name, known)}"
+            )
     return validate_command(Path(args.out), args.sets)
 
 
@@ -304,7 +351,16 @@ def _add_diagnose(g: argparse.ArgumentParser) -> None:
         "(runs), or none (default: auto = highest_speeds with 3 or more distinct speeds, "
         "else none)",
     )
-    g.add_argument("--out", default=None, help="folder for tables and figures")
+    g.add_argument(
+        "--out",
+        default=None,
+        help="folder for tables, figures and the calibrated model (calibrated_model.json)",
+    )
+    g.add_argument(
+        "--verbose",
+        action="store_true",
+        help="print every look-alike pair, the gap table row by row and the notes",
+    )
 
 
 def _add_calibrate(c: argparse.ArgumentParser) -> None:
@@ -343,6 +399,21 @@ def _add_study(st: argparse.ArgumentParser) -> None:
         "--overwrite",
         action="store_true",
         help="start --out afresh, whatever it holds (another grid, damaged files)",
+    )
+
+
+def _add_effects(e: argparse.ArgumentParser) -> None:
+    e.add_argument(
+        "--parameters",
+        action="store_true",
+        help="list instead every name thermobear calibrate --parameters accepts, per baseline",
+    )
+    only = e.add_mutually_exclusive_group()
+    only.add_argument(
+        "--model", default=None, help="with --parameters: only those of this system description"
+    )
+    only.add_argument(
+        "--spindle", default=None, help="with --parameters: only those of this spindle preset"
     )
 
 
@@ -390,7 +461,7 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("config", help="path to the .toml system description")
     s.add_argument("--out", default="thermobear-out", help="output folder (default: %(default)s)")
     add("presets", "list built-in bearings, materials and seeds", False, _cmd_presets)
-    add("effects", "list the named physical effects", False, _cmd_effects)
+    _add_effects(add("effects", "list the named physical effects", False, _cmd_effects))
     _add_diagnose(
         add("diagnose", "name the effect missing between model and measurements", True,
             _cmd_diagnose)
@@ -398,6 +469,13 @@ def build_parser() -> argparse.ArgumentParser:
     _add_calibrate(
         add("calibrate", "calibrate named parameters of a baseline on measurements", True,
             _cmd_calibrate)
+    )  # fmt: skip
+    from .predict import add_arguments as _add_predict
+
+    _add_predict(
+        add("predict", "predict a calibrated model (.json) with its band: table and figures",
+            True, _cmd_predict),
+        _formats_arg, _dpi_arg,
     )  # fmt: skip
     _add_study(
         add("study", "run a design study (grid in TOML) into parquet chunks; resumes", True,
@@ -443,6 +521,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
 
 def _main(argv: Optional[Sequence[str]]) -> int:
     from ..errors import ThermobearError
+    from .predict import UsageError
 
     parser = build_parser()
     try:
@@ -460,6 +539,9 @@ def _main(argv: Optional[Sequence[str]]) -> int:
         return code
     except BrokenPipeError:
         raise  # main: quietly
+    except UsageError as e:  # an option that does not fit the input, found after parsing
+        print(f"thermobear {args.command}: error: {_one_line(e)}", file=sys.stderr)
+        return EXIT_USAGE
     except ThermobearError as e:
         if debug:
             traceback.print_exc()

@@ -14,6 +14,8 @@ from .candidates import Candidate, _candidate_list, load_level_candidates
 from .measurements import QUANTITIES
 from .protocol import ModelSpec, register_kind
 from .registry import _THERMAL_DEFAULTS, LOAD_SCALE_OPTIONS, supply_given
+from .relative import with_changes
+from .unknown_heat import UNKNOWN_HEAT_OPTIONS, has_unknown_heat, unknown_heat_w
 
 if TYPE_CHECKING:
     import polars
@@ -107,7 +109,10 @@ class BearingModelSpec(ModelSpec):
         return {
             k: v
             for k, v in self.options.items()
-            if k not in LOAD_SCALE_OPTIONS and "@" not in k and v is not None
+            if k not in LOAD_SCALE_OPTIONS
+            and k not in UNKNOWN_HEAT_OPTIONS
+            and "@" not in k
+            and v is not None
         }
 
     def level_candidates(
@@ -126,8 +131,6 @@ class BearingModelSpec(ModelSpec):
     def predict(self, conditions: polars.DataFrame) -> dict[str, np.ndarray]:
         """Every supported quantity at each row of ``conditions``
         (``speed_rpm``, ``axial_n``, ``radial_n``): name -> array."""
-        from ..thermal import thermal_stiffness_curve
-
         sp = conditions["speed_rpm"].to_numpy()
         ax = conditions["axial_n"].to_numpy()
         ra = conditions["radial_n"].to_numpy()
@@ -138,12 +141,10 @@ class BearingModelSpec(ModelSpec):
             rows = np.flatnonzero((ax == a) & (ra == r))
             speeds = np.unique(sp[rows])
             fa, fr = self.loads(a, r)
-            key = (tkey, fa, fr, tuple(speeds.tolist()))
+            key = (tkey, self._unknown_key(), fa, fr, tuple(speeds.tolist()))
             if key not in self._cache:
                 try:
-                    df = thermal_stiffness_curve(
-                        self.bearing, speeds, fa, fr, effects=list(self.effects), **topts
-                    )
+                    df = self._curve(speeds, fa, fr, topts)
                 except ThermobearError as e:  # a failing configuration fails every time
                     self._cache[key] = e
                     raise
@@ -156,7 +157,31 @@ class BearingModelSpec(ModelSpec):
             idx = np.searchsorted(speeds, sp[rows])
             for q in QUANTITIES:
                 out[q][rows] = res[q][idx]
-        return out
+        return with_changes(out, conditions, self.predict)  # relative quantities
+
+    def _unknown_key(self) -> tuple:
+        return tuple(self.options.get(k) for k in UNKNOWN_HEAT_OPTIONS)
+
+    def _curve(self, speeds: np.ndarray, fa: float, fr: float, topts: dict) -> polars.DataFrame:
+        """The thermal stiffness curve at ``speeds``; with an unknown heat
+        source of its own speed law (``unknown_heat_w``) each speed is
+        solved with its own extra heat."""
+        import polars as pl
+
+        from ..thermal import thermal_stiffness_curve
+
+        eff = list(self.effects)
+        if not has_unknown_heat(self.options):
+            return thermal_stiffness_curve(self.bearing, speeds, fa, fr, effects=eff, **topts)
+        extra = float(topts.get("extra_heat_w", 0.0)) + unknown_heat_w(self.options, speeds)
+        rest = {k: v for k, v in topts.items() if k != "extra_heat_w"}
+        frames = [
+            thermal_stiffness_curve(
+                self.bearing, [n], fa, fr, effects=eff, extra_heat_w=float(h), **rest
+            )
+            for n, h in zip(speeds.tolist(), extra.tolist(), strict=True)
+        ]
+        return pl.concat(frames)
 
     def candidate_list(self, quantities: Sequence[str] = ()) -> list[Candidate]:
         """The candidates against this baseline, with a sensor-offset decoy
@@ -173,7 +198,9 @@ def _check_option_names(options: dict) -> None:
     current_option_names(options)
     for k in options:
         level = k.split("@", 1)
-        if k in _THERMAL_DEFAULTS or (len(level) == 2 and level[0] in LOAD_SCALE_OPTIONS):
+        if k in _THERMAL_DEFAULTS or k in UNKNOWN_HEAT_OPTIONS:
+            continue
+        if len(level) == 2 and level[0] in LOAD_SCALE_OPTIONS:
             continue
         raise ConfigError(f"invalid option = {k!r}: known: {', '.join(sorted(_THERMAL_DEFAULTS))}")
 

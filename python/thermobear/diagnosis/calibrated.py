@@ -104,6 +104,10 @@ class CalibratedModel:
         self.members: tuple[CalibratedModel, ...] = tuple(members)
         self.provenance: dict = dict(provenance or {})
         self.discrepancy = discrepancy
+        #: A member's weight in the mixture of its tie or "unresolved"
+        #: model (pseudo-BMA+ weight of its cross-validated predictive densities,
+        #: ``thermobear.diagnosis.weights``); None: not weighed.
+        self.weight: Optional[float] = None
         self.spec: ModelSpec = self.spec_at(self.values)
 
     @property
@@ -209,7 +213,10 @@ class CalibratedModel:
                 f"  {r['name']} = {r['value']:.4g} +/- {r['std']:.3g}  95 % "
                 f"[{r['lower_95']:.4g}, {r['upper_95']:.4g}]"
             )
-        lines += [f"  member: {m.label}" for m in self.members]
+        lines += [
+            f"  member: {m.label}" + ("" if m.weight is None else f" (weight {m.weight:.2f})")
+            for m in self.members
+        ]
         p = self.provenance
         if p:
             lines.append(
@@ -299,8 +306,18 @@ def provenance(labels: Sequence[str], tables: Sequence[Any], verdict: str = "") 
 
 def fd_covariance(base: ModelSpec, steps: Sequence[_Step], values: Any, data: Any) -> np.ndarray:
     """The linearised covariance of ``values`` from a finite-difference
-    Jacobian of ``data``'s weighted residuals (a step of 1e-4 of each
-    value's bound span, inward at a bound)."""
+    Jacobian of ``data``'s weighted residuals (``weighted_jacobian``)."""
+    r0, jac = weighted_jacobian(base, steps, values, data)
+    phi = max(1.0, float(r0 @ r0) / max(len(r0) - len(np.atleast_1d(values)), 1))
+    return linear_covariance(jac, phi)
+
+
+def weighted_jacobian(
+    base: ModelSpec, steps: Sequence[_Step], values: Any, data: Any
+) -> tuple[np.ndarray, np.ndarray]:
+    """``data``'s weighted residuals (residual / sigma) at ``values`` and
+    their finite-difference Jacobian against the free steps (a step of
+    1e-4 of each value's bound span, inward at a bound)."""
     from .setting import _predict
 
     probe = CalibratedModel("named", "", base, steps, values, np.zeros((len(values),) * 2))
@@ -319,8 +336,7 @@ def fd_covariance(base: ModelSpec, steps: Sequence[_Step], values: Any, data: An
         v = v0.copy()
         v[j] += h
         jac[:, j] = (resid(v) - r0) / h
-    phi = max(1.0, float(r0 @ r0) / max(len(r0) - len(v0), 1))
-    return linear_covariance(jac, phi)
+    return r0, jac
 
 
 def _plain(v: Any) -> Any:
@@ -368,6 +384,7 @@ def _to_dict(m: CalibratedModel) -> dict:
         "members": [_to_dict(x) for x in m.members],
         "provenance": m.provenance,
         "discrepancy": m.discrepancy,
+        **({} if m.weight is None else {"weight": float(m.weight)}),
     }
 
 
@@ -389,11 +406,14 @@ def _from_dict(d: dict) -> CalibratedModel:
         c = s["candidate"]
         cand = None if c is None else Candidate(**{**c, "affects": tuple(c["affects"])})
         steps.append(_Step(s["name"], cand, s["fixed"]))
-    return CalibratedModel(
+    m = CalibratedModel(
         d["kind"], d["label"], _base_from(d["base"]), steps, d["values"], d["covariance"],
         [tuple(b) for b in d["profile"]], [_from_dict(x) for x in d["members"]],
         d["provenance"], d["discrepancy"],
     )  # fmt: skip
+    w = d.get("weight")
+    m.weight = None if w is None else float(w)
+    return m
 
 
 def calibration_models(prob: Any, theta: Any, jac: Any, intervals: Any, phi: float) -> list:
@@ -529,11 +549,58 @@ def _unresolved_model(s: Any, prov: dict) -> CalibratedModel:
     disc = {"label": ctrl.label, "quantities": list(ctrl.quantities),
             "n_parameters": int(ctrl.n_parameters), "chi2": float(ctrl.chi2),
             "delta_bic": float(ctrl.delta_bic)}  # fmt: skip
-    disc = with_discrepancy(disc, s.model, [], s.data)
-    members.append(
-        _member("named", f"generic_control: {ctrl.label}", s.model, [], [], s.data, prov, disc)
-    )
-    return _with_members("unresolved", "unresolved: " + members[0].label, members, prov)
+    members.append(_unknown_member("generic_control: ", s, [], disc, prov))
+    return _weighed("unresolved", "unresolved: " + members[0].label, members, s.data, prov)
+
+
+def _unknown_member(
+    tag: str, s: Any, fixed: list, desc: dict, prov: dict
+) -> CalibratedModel:  # fmt: skip
+    """The member of an unknown effect on top of the ``fixed`` steps: on a
+    bearing, an unknown heat source with its own speed law fitted to the
+    data (``thermobear.diagnosis.unknown_heat``) and a Gaussian-process
+    discrepancy for what it leaves; elsewhere the discrepancy alone."""
+    from .unknown_heat import fit_unknown_heat, supports_unknown_heat
+
+    if not supports_unknown_heat(s.model):
+        disc = with_discrepancy(desc, s.model, fixed, s.data)
+        return _member("named", f"{tag}{desc['label']}", s.model, fixed, [], s.data, prov, disc)
+    probe = CalibratedModel("named", "", s.model, fixed, [], np.zeros((0, 0)))
+    (lin, quad, rc), ref, coef, chi2 = fit_unknown_heat(s.model, probe._setting([]), s.data)
+    steps = [*fixed, _Step(rc.name, rc, ref), _Step(lin.name, lin), _Step(quad.name, quad)]
+    cov = fd_covariance(s.model, steps, coef, s.data)
+    sd = np.sqrt(np.clip(np.diag(cov), 0.0, None))
+    records = [
+        {"value": float(v), "lower_95": float(v - 1.96 * e), "upper_95": float(v + 1.96 * e)}
+        for v, e in zip(coef, sd, strict=True)
+    ]
+    held = [_Step(st.name, st.cand, float(v)) for st, v in zip(
+        [st for st in steps if st.fixed is None], coef, strict=True)]  # fmt: skip
+    label = "an unknown heat source with its own speed law"
+    desc = {**desc, "label": label, "physics": "unknown_heat_source", "chi2": chi2}
+    disc = with_discrepancy(desc, s.model, [*[st for st in steps if st.fixed is not None], *held],
+                            s.data)  # fmt: skip
+    return _member("named", f"{tag}{label}", s.model, steps, records, s.data, prov, disc)
+
+
+def _weighed(
+    kind: ModelKind, label: str, members: list, data: Any, prov: dict
+) -> CalibratedModel:  # fmt: skip
+    """The model of ``members`` with each member's weight from its
+    cross-validated predictive density (pseudo-BMA+:
+    ``thermobear.diagnosis.weights``)."""
+    from .weights import loo_log_density, pseudo_bma_weights
+
+    lpd = []
+    for m in members:
+        r, jac = weighted_jacobian(m._base, m._steps, m.values, data)
+        gp = (m.discrepancy or {}).get("gaussian_process")
+        lpd.append(loo_log_density(r, jac, data, gp))
+    for m, w in zip(members, pseudo_bma_weights(np.column_stack(lpd)), strict=True):
+        m.weight = float(w)
+    out = _with_members(kind, label, members, prov)
+    out.weight = None
+    return out
 
 
 def _tie_model(s: Any, prov: dict) -> CalibratedModel:
@@ -548,15 +615,12 @@ def _tie_model(s: Any, prov: dict) -> CalibratedModel:
     for i, n in enumerate(s.tie, start=1):
         if n == "generic_control":
             disc = {"label": "an unknown smooth effect", "quantities": [], "n_parameters": 0}
-            disc = with_discrepancy(disc, s.model, fixed, s.data)
-            members.append(
-                _member("named", f"tie member {i}: generic_control", s.model, fixed, [], s.data,
-                        prov, disc)
-            )  # fmt: skip
+            members.append(_unknown_member(f"tie member {i}: generic_control: ", s, fixed,
+                                           disc, prov))  # fmt: skip
             continue
         c, r = cands[n], rows.get(n, {"value": 1.0, "lower_95": None, "upper_95": None})
         step = _Step(n, c) if c.kind == "parameter" else _Step(n, c, 1.0)
         free = [r] if c.kind == "parameter" else []
         label = f"tie member {i}: {n}"
         members.append(_member("named", label, s.model, [*fixed, step], free, s.data, prov))
-    return _with_members("tie", "tie: " + " | ".join(s.tie), members, prov)
+    return _weighed("tie", "tie: " + " | ".join(s.tie), members, s.data, prov)

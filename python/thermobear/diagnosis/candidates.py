@@ -412,7 +412,12 @@ def candidate_pool(
     known = {c.name for c in pool}
     for n in names:
         if n not in known:
-            raise ConfigError(f"invalid candidate = {n!r}: known: {', '.join(sorted(known))}")
+            from .._validate import did_you_mean
+
+            raise ConfigError(
+                f"invalid candidate = {n!r}: known: {', '.join(sorted(known))}"
+                + did_you_mean(n, sorted(known))
+            )
     return [c for c in pool if c.name in set(names)]
 
 

@@ -37,6 +37,9 @@ QUANTITIES: dict[str, tuple[str, float, tuple[float, float], float, bool]] = {
     "heat_w": ("heat_w", 1.0, (0.0, 1e5), 0.02, True),
     "axial_displacement_um": ("axial_displacement_um", 1.0, (-1e4, 1e4), 0.5, False),
     "inner_contact_angle_deg": ("inner_contact_angle_max_deg", 1.0, (0.0, 90.0), 0.2, False),
+    # a probe zeroed at a reference speed: the change of axial_displacement_um
+    # from there (thermobear.diagnosis.relative; the model column is the absolute one)
+    "axial_displacement_change_um": ("axial_displacement_um", 1.0, (-1e4, 1e4), 0.5, False),
 }  # fmt: skip
 
 #: The columns a measurement table may have; any other is refused (a
@@ -197,7 +200,14 @@ def load_measurements(
     angle 0-90 deg), and duplicate rows (the same quantity at the same
     speed, loads and run), unless ``duplicates="mean"``: then they are
     averaged (sigma of the mean sqrt(sum sigma^2) / n). A default sigma is
-    never below the quantity's ``SIGMA_FLOOR``.
+    never below the quantity's ``SIGMA_FLOOR``. The unit and reading checks
+    of ``thermobear.diagnosis.plausible_data`` run too: a stiffness whose
+    every value is 1e4 N/m or less is refused as N/um; a displacement
+    whose every value is below 1 um, a heat of 0 at speed, a table at one
+    speed, and a change quantity (``axial_displacement_change_um``: the
+    change from the lowest speed of that quantity at the same loads and
+    run, ``thermobear.diagnosis.relative``) that does not read about 0
+    there warn ([`PlausibilityWarning`][thermobear.PlausibilityWarning]).
     """
     if duplicates not in ("error", "mean"):
         raise ConfigError(f"invalid duplicates = {duplicates!r}: 'error' or 'mean'")
@@ -209,9 +219,13 @@ def load_measurements(
     preload = any(table is t for t in PRELOAD_REGISTRIES)
     df = _operating_columns(_preload_column(df) if preload else df)
     df = _numeric_columns(df)
+    from .plausible_data import check_readings, check_units
+
+    check_units(df.with_columns(df["quantity"].cast(str)), table)  # N/um, mm
     df = _checked_quantities(df, table)
     _checked_conditions(df, "preload_n" if preload else "axial_n")
     df = _without_duplicates(_with_sigma_and_run(df, table), duplicates)
+    check_readings(df, STATIC_QUANTITIES)  # warnings: heat 0 at speed, one speed, a zero
     return df.rename({"axial_n": "preload_n"}) if preload else df
 
 
@@ -753,11 +767,26 @@ def prepare_measurements(measured: Any, quantities: dict, holdout: Any) -> Measu
         df["quantity"].to_numpy(),
         df["value"].to_numpy(),
         df["sigma"].to_numpy(),
-        df.select(["speed_rpm", "axial_n", "radial_n"]),
+        with_reference_speeds(df, df.select(["speed_rpm", "axial_n", "radial_n"])),
         holdout_mask(df, holdout),
         cv_folds(df),
         given,
     )
+
+
+def with_reference_speeds(df: polars.DataFrame, cond: polars.DataFrame) -> polars.DataFrame:
+    """The conditions ``cond`` of a table ``df`` with a change quantity
+    (``thermobear.diagnosis.relative``) with each row's reference speed
+    (``reference_speed_rpm``: null on the other quantities' rows); as they
+    are without one."""
+    import polars as pl
+
+    from .relative import REFERENCE_SPEED, has_changes, reference_speeds
+
+    if not has_changes(df["quantity"].to_numpy()):
+        return cond
+    ref = pl.Series(REFERENCE_SPEED, reference_speeds(df), dtype=pl.Float64)
+    return cond.with_columns(ref.fill_nan(None))
 
 
 def _has_sigma(measured: Any) -> bool:

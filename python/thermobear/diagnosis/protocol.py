@@ -100,8 +100,12 @@ def as_spec(model: Any) -> Any:
     """The model spec of ``model``: a spec is returned as it is; a model
     object of a registered kind (a [`Bearing`][thermobear.Bearing], a
     [`Spindle`][thermobear.Spindle]) becomes its spec with the model as
-    configured (the spec's default options, every effect of the model on).
-    Anything else raises [`ConfigError`][thermobear.ConfigError]."""
+    configured (the spec's default options, every effect of the model on);
+    a calibrated model ([`CalibratedModel`][thermobear.CalibratedModel])
+    gives its spec at the estimate (its ``spec``). Anything else raises
+    [`ConfigError`][thermobear.ConfigError]."""
+    if hasattr(model, "spec_at") and hasattr(model, "spec"):
+        model = model.spec
     for _, (model_class, spec_class, _) in MODEL_KINDS.items():
         if isinstance(model, spec_class):
             return model

@@ -51,6 +51,7 @@ from .candidates import candidates as _candidate_table
 from .measurements import PRELOAD_REGISTRIES, load_measurements
 from .protocol import ModelSpec, register_kind
 from .registry import supply_given
+from .relative import with_changes
 from .result import Diagnosis
 from .screening import _GRID
 from .workflow import diagnose
@@ -124,6 +125,10 @@ SPINDLE_QUANTITIES: dict[str, tuple[str, float, tuple[float, float], float, bool
     "k_xx_n_per_m": ("k_xx_n_per_m", 1.0, (0.0, 1e11), 0.05, True),
     "compensation_preload_n": ("compensation_preload_n", 1.0, (-1e4, 1e4), 0.5, False),
     "x1_mm_s": ("x1_mm_s", 1.0, (0.0, 1e3), 0.05, True),
+    # probes zeroed at a reference speed: the change of axial_growth_um and
+    # radial_displacement_um from there (thermobear.diagnosis.relative)
+    "axial_growth_change_um": ("axial_growth_um", 1.0, (-1e4, 1e4), 0.5, False),
+    "radial_displacement_change_um": ("radial_displacement_um", 1.0, (-1e3, 1e3), 0.2, False),
 }  # fmt: skip
 _VIB = "velocity_rms_mm_s"
 #: The quantities of the rotor's forced response (computed on first access).
@@ -510,7 +515,7 @@ class SpindleModelSpec(ModelSpec):
                 return self._vibration_rows(q, sp, pre)
             return column([self._row(float(p), float(v)) for p, v in cells], q)
 
-        return _Predictions(out, lazy)
+        return with_changes(_Predictions(out, lazy), conditions, self.predict)
 
     def _vibration_rows(self, quantity: str, sp: np.ndarray, pre: np.ndarray) -> np.ndarray:
         """The rotor's ``quantity`` (velocity RMS, or the 1X amplitude) at

@@ -46,12 +46,18 @@ def unresolved_text(records: list, gain: float, ctrl, chi2_named=None, k_named=N
     )
 
 
-def verdict_text(accepted: list, tie: list, p_final: float, unresolved=None, outliers=None) -> str:
+def verdict_text(
+    accepted: list, tie: list, p_final: float, unresolved=None, outliers=None, unexplained: str = ""
+) -> str:
     """The verdict: the accepted candidates in words (``_verdict_part``)
     and a tie set, or the unresolved comparison with the generic control
     (``unresolved_text``); without any, "structured residual not
     explained by any known effect" when the final residual fails the chi^2
     test at 1 % (``p_final`` < 0.01), else "no missing effect supported".
+    ``unexplained``: the words of a best named fit still far above noise
+    (``thermobear.diagnosis.plausible_data.unexplained_words``: "not
+    explained by any known effect", its chi^2 and the likely causes),
+    after what was found, or after "structured residual" when nothing was.
     Outliers left out (``outliers``: their table) close the verdict."""
     parts = [_verdict_part(a) for a in accepted]
     if unresolved is not None:
@@ -59,9 +65,13 @@ def verdict_text(accepted: list, tie: list, p_final: float, unresolved=None, out
     if tie:
         names = [n if n != "generic_control" else "an unknown smooth effect" for n in tie]
         parts.append("tie: " + " | ".join(names) + " (the data cannot tell them apart)")
+    if parts and unexplained:
+        parts.append(unexplained)
     if not parts:
         parts.append(
-            "structured residual not explained by any known effect"
+            f"structured residual {unexplained}"
+            if unexplained
+            else "structured residual not explained by any known effect"
             if p_final < 0.01
             else "no missing effect supported"
         )

@@ -85,6 +85,7 @@ from .explain import (
 from .identifiability import identifiability
 from .measurements import MeasuredData, prepare_measurements
 from .outliers import flag_outliers, outlier_table
+from .plausible_data import unexplained_words
 from .protocol import ModelSpec, as_spec
 from .result import Diagnosis
 from .screening import candidate_curves, screen, screening_table
@@ -392,7 +393,8 @@ def _conclude(
     r1 = d.residual(s.pred)
     p_final = noise_p_value(_chi2(r1), d.n)
     out_table = outlier_table(full.df, ~keep, z, pred1)
-    verdict = verdict_text(s.accepted, s.tie, p_final, s.unresolved, out_table)
+    unexplained = unexplained_words(d, s.pred, s.screening, s.model.quantities)
+    verdict = verdict_text(s.accepted, s.tie, p_final, s.unresolved, out_table, unexplained)
     _final_notes(s, full, p_final)
     pred_x = calibrated_without_heldout(s, s.accepted_cands, full) if full.held.any() else pred1
     preds = explained_predictions(s)
@@ -404,13 +406,31 @@ def _conclude(
         pl.Series("heldout", full.held),
         pl.Series("outlier", ~keep),
     )
+    model = diagnosis_model(s, verdict)
+    verdict = with_weights(verdict, model)
     return Diagnosis(
         baseline_audit, s.fingerprints, s.lookalikes, s.screening, s.accepted, s.tie,
         verdict, gap, points, sorted(set(s.not_evaluable)), s.notes, ties=s.ties,
         tie_gap=s.tie_gap, outliers=out_table, explained=explained_points(s, preds),
         unresolved=[] if s.unresolved is None else s.unresolved[0],
-        _model=diagnosis_model(s, verdict),
+        _model=model,
     )  # fmt: skip
+
+
+def with_weights(verdict: str, model: Any) -> str:
+    """The verdict with the weights of a tie's or an "unresolved"
+    verdict's explanations in words (``weights_words``), also in the
+    model's provenance."""
+    from .weights import weights_words
+
+    words = weights_words(model)
+    if not words:
+        return verdict
+    verdict = f"{verdict}; {words}"
+    model.provenance["verdict"] = verdict
+    for m in model.members:
+        m.provenance["verdict"] = verdict
+    return verdict
 
 
 def _final_notes(s: _Search, full: MeasuredData, p_final: float) -> None:

@@ -24,6 +24,7 @@ __all__ = ["prediction_band", "regime_probability"]
 
 #: The ``member`` label of a prediction's rows that cover every member's band.
 ENVELOPE = "envelope"
+MIXTURE = "mixture"
 
 #: How a unit of a prediction frame is shown: (factor, shown unit). A
 #: stiffness reads in N/um, as engineers quote it.
@@ -120,7 +121,8 @@ def prediction_band(
     ``member``, ``method``) at one load condition. A single model: its value
     as a line and the band between ``lower`` and ``upper`` shaded. Several
     members (a tie, "unresolved"): each member's value as a line and the
-    envelope of their bands shaded. ``measured``: a tidy measurement table
+    combined band shaded (the weighed mixture's, or the envelope's when the
+    frame was made with ``band="envelope"``). ``measured``: a tidy measurement table
     (``speed_rpm``, ``quantity``, ``value``, ``sigma``; as from
     [`thermobear.load_measurements`][thermobear.load_measurements]): its
     points of ``quantity`` with error bars of one sigma, and the range of
@@ -136,16 +138,21 @@ def prediction_band(
     unit = str(rows["unit"][0]) if "unit" in rows.columns else "1"
     k, _ = shown_unit(unit)
     labels = rows["member"].unique(maintain_order=True).to_list()
-    members = [m for m in labels if m != ENVELOPE]
-    several = len(members) > 1 or ENVELOPE in labels
-    band = rows.filter(pl.col("member") == ENVELOPE) if ENVELOPE in labels else rows
-    if several and ENVELOPE not in labels:
+    combined = next((m for m in (MIXTURE, ENVELOPE) if m in labels), None)
+    members = [m for m in labels if m not in (MIXTURE, ENVELOPE)]
+    several = len(members) > 1 or combined is not None
+    band = rows.filter(pl.col("member") == combined) if combined is not None else rows
+    if several and combined is None:
         band = rows.group_by("speed_rpm").agg(pl.col("lower").min(), pl.col("upper").max())
     band = band.sort("speed_rpm")
     method = str(rows["method"][0]) if "method" in rows.columns and not several else ""
     what = {"delta": "band (delta method)", "sampling": "band (sampled)"}.get(method, "band")
     if several:
-        what = "envelope of the explanations' bands"
+        what = (
+            "band of the explanations' weighed mixture"
+            if combined == MIXTURE
+            else "envelope of the explanations' bands"
+        )
     ax.fill_between(band["speed_rpm"].to_numpy(), band["lower"].to_numpy() * k,
                     band["upper"].to_numpy() * k, color="tab:blue", alpha=0.25, lw=0,
                     zorder=2, label=what)  # fmt: skip
@@ -175,7 +182,7 @@ def _regime_grid(
     if "quantity" in df.columns:
         df = df.filter(pl.col("quantity") == "regime_probability")
     if "member" in df.columns:
-        df = df.filter(pl.col("member") != ENVELOPE)
+        df = df.filter(~pl.col("member").is_in([ENVELOPE, MIXTURE]))
         if member is not None:
             df = df.filter(pl.col("member") == member)
     if df.height == 0:

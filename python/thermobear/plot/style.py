@@ -9,6 +9,7 @@ when a figure is drawn."""
 from __future__ import annotations
 
 import functools
+import inspect
 from contextlib import contextmanager
 from typing import (
     TYPE_CHECKING,
@@ -108,13 +109,78 @@ P = ParamSpec("P")
 R = TypeVar("R")
 
 
+#: Plot function -> the call that computes what it draws from a model
+#: (named when a model is given in its place).
+COMPUTED_BY: dict[str, str] = {
+    "stiffness_curve": "tb.stiffness_curve(model, speeds_rpm, axial_n)",
+    "stiffness_cases": "[tb.stiffness_curve(model, speeds_rpm, axial_n, mode=m) for m in modes]",
+    "contact_angles": "tb.stiffness_curve(model, speeds_rpm, axial_n)",
+    "ball_loads": "bearing.solve(axial_n, radial_n, speed_rpm=...)",
+    "heat_vs_speed": "[tb.stiffness_curve(model, speeds_rpm, axial_n, mode='thermal'), ...]",
+    "node_temperatures": "tb.stiffness_curve(model, speeds_rpm, axial_n, mode='thermal')",
+    "thermal_deformations": "tb.stiffness_curve(model, speeds_rpm, axial_n, mode='thermal')",
+    "spindle_temperatures": "pl.concat([tb.thermal_state(model, s) for s in speeds_rpm])",
+    "spindle_transient": "tb.transient(model, speed_rpm=..., duration_s=...)",
+    "optimal_preload": "tb.spindle_grid(model, speeds_rpm=..., preloads_n=...)",
+    "compensation_preload": "tb.compensation_preload(model, speeds_rpm=...)",
+    "campbell": "tb.campbell(model)",
+    "spectrum": "tb.spectrum(model, speed_rpm)",
+    "vibration": "[tb.vibration(model, speeds_rpm)]",
+    "bifurcation": "tb.bifurcation(tb.GearSystem(model), speeds_rpm)",
+    "regime_map": "tb.regime_map(tb.GearSystem(model), torques_n_m, speeds_rpm)",
+    "prediction_band": "tb.predict(model, what, conditions)",
+    "regime_probability": "tb.predict(model, 'regimes', conditions, gear=...)",
+    "diagnosis_fit": "tb.diagnose(model, measured)",
+    "diagnosis_residuals": "tb.diagnose(model, measured)",
+}
+
+
+def _is_model(obj: Any) -> bool:
+    """Whether ``obj`` is a machine or a model (a bearing, spindle, gear
+    pair or system, model spec, calibrated model) rather than a result."""
+    from .. import _model_hook
+    from ..bearing import Bearing
+    from ..gear import GearPair, GearSystem
+    from ..spindle import Spindle
+
+    return (
+        _model_hook.is_calibrated(obj)
+        or isinstance(obj, (Bearing, Spindle, GearPair, GearSystem))
+        or all(hasattr(obj, a) for a in ("candidate_list", "with_setting", "quantities"))
+    )
+
+
+def refuse_model(name: str, param: str, args: tuple[Any, ...]) -> None:
+    """Raise [`ConfigError`][thermobear.ConfigError] when the first argument
+    (``param``) of the plot function ``name`` (or an item of it) is a model
+    rather than the result it draws, naming the call that computes that
+    result."""
+    if not args:
+        return
+    first = args[0]
+    items = first if isinstance(first, (list, tuple)) else (first,)
+    if not any(_is_model(x) for x in items):
+        return
+    how = COMPUTED_BY.get(name, "the call its docstring names")
+    raise ConfigError(
+        f"invalid {param} = {type(items[0]).__name__}: thermobear.plot.{name} draws a "
+        f"result, not a model; compute it first and plot that: {how}"
+    )
+
+
 def styled(func: Callable[P, R]) -> Callable[P, R]:
     """Decorate a plot function: it draws inside ``style_context``, and a
     figure without a layout engine gets the style's (constrained) layout,
-    so that small figures keep their labels whole."""
+    so that small figures keep their labels whole. A model (a bearing, a
+    spindle, a calibrated model ...) given where the function takes the
+    result it draws raises [`ConfigError`][thermobear.ConfigError] naming the
+    call that computes it (``refuse_model``)."""
+
+    first = next(iter(inspect.signature(func).parameters), "")
 
     @functools.wraps(func)
     def wrapper(*args: P.args, **kwargs: P.kwargs) -> R:
+        refuse_model(func.__name__, first, args)
         with style_context():
             result = func(*args, **kwargs)
             fit_layout(getattr(result, "figure", None))

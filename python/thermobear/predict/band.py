@@ -1,6 +1,29 @@
 """[`predict`][thermobear.predict.band.predict]: a calibrated model's prediction with its
 band, for a single explanation or for each member of a tie (and the
-envelope that covers them all)."""
+envelope that covers them all).
+
+Under a tie or "unresolved" each member (explanation) gets its rows,
+with its ``weight`` (from how well it predicts the points it was not
+fitted to: pseudo-BMA+ weights of leave-one-out predictive densities, see
+``thermobear.diagnosis.weights``), and ``band`` chooses the combined
+reading: ``"mixture"`` (default; ``member`` "mixture") is the band of
+the weighed mixture of the members' predictions at ``level`` (each
+member's band read as a normal of its value and half-width / z; value:
+the mixture's mean), ``"envelope"`` (``member`` "envelope") covers
+every member's band (value: the members' mean), the conservative
+reading. The unknown member of "unresolved" is, on a bearing, an
+unknown heat source with its own speed law fitted to the data
+(``thermobear.diagnosis.unknown_heat``: it predicts every quantity,
+through the heat balance, with a band from its two coefficients), and
+on every machine the posterior of a model-discrepancy term on top (a
+Gaussian process in speed fitted to what is left on the training
+points; ``method`` "discrepancy"): narrow at the measured speeds,
+wider away from them. A quantity that no part of a member constrains
+(no calibrated value acts on it and it was not measured) gets
+``method`` "unconstrained" and null bounds, never a band of zero
+width. A model with no calibrated value and no discrepancy term (the
+baseline) has a band of zero width, ``method`` "none".
+"""
 
 from __future__ import annotations
 
@@ -11,6 +34,7 @@ import numpy as np
 from ..errors import ConfigError
 from .conditions import What, condition_columns, condition_frame, quantities_for, unit_of_quantity
 from .engine import check_engine, study_band
+from .model_input import as_calibrated, measured_conditions
 from .regimes import Direction, predict_regimes
 from .uncertainty import check_level, delta_band, parameters_of, sampling_band
 
@@ -20,6 +44,12 @@ if TYPE_CHECKING:
 Method = Literal["auto", "delta", "sampling"]
 _METHODS = ("auto", "delta", "sampling")
 
+#: The combined reading of a tie's or an "unresolved" model's members:
+#: "mixture" (the members' bands weighed by their weights) or "envelope"
+#: (the union of every member's band: the conservative reading).
+Band = Literal["mixture", "envelope"]
+BANDS = ("mixture", "envelope")
+
 #: The outputs "auto" treats as smooth in the calibrated values (delta
 #: method); any other goes to sampling. Every ``what`` of
 #: [`predict`][thermobear.predict.band.predict] is a steady-state solution, smooth in
@@ -28,6 +58,19 @@ SMOOTH_WHATS = frozenset({"measured", "stiffness", "temperatures", "growth", "vi
 
 #: The ``member`` label of the rows that cover every member's band.
 ENVELOPE = "envelope"
+
+#: The ``member`` (and ``method``) of the rows of the weighed mixture of
+#: the members' bands.
+MIXTURE = "mixture"
+
+#: The ``method`` of a band no member's data can constrain (a quantity the
+#: unknown smooth term was not measured on): bounds null, never zero width.
+UNCONSTRAINED = "unconstrained"
+
+#: Below this total weight, members whose band is unconstrained are left
+#: out of the mixture (the others' weights renormalised); above it the
+#: mixture is unconstrained too.
+UNCONSTRAINED_WEIGHT = 1e-3
 
 #: The ``method`` of the rows whose band is the model-discrepancy term's
 #: (with the calibrated values' part, if any); the key of its fitted
@@ -63,34 +106,6 @@ class ModelOutputs:
         return self._cache[key]
 
 
-def as_calibrated(model: Any) -> Any:
-    """The calibrated model of ``model``: a ``CalibratedModel`` (anything
-    with ``spec_at``) as it is, a [`Calibration`][thermobear.Calibration]
-    or [`Diagnosis`][thermobear.Diagnosis] by its ``model``."""
-    if hasattr(model, "spec_at") and hasattr(model, "spec"):
-        return model
-    inner = getattr(model, "model", None)
-    if inner is not None and hasattr(inner, "spec_at"):
-        return inner
-    raise ConfigError(
-        f"invalid model = {type(model).__name__}: give a calibrated model (Calibration.model, "
-        "Diagnosis.model)"
-    )
-
-
-def measured_conditions(model: Any) -> Any:
-    """The conditions the calibrated model was calibrated at, when it
-    carries them (a ``conditions`` frame or the ``points`` of its
-    calibration), else None."""
-    for attr in ("conditions", "points"):
-        df = getattr(model, attr, None)
-        if df is not None and hasattr(df, "columns") and "speed_rpm" in df.columns:
-            return df
-    prov = getattr(model, "provenance", None) or {}
-    got = prov.get("conditions") if isinstance(prov, dict) else None
-    return got if got is not None and hasattr(got, "columns") else None
-
-
 def predict(
     model: Any,
     what: What = "measured",
@@ -105,6 +120,7 @@ def predict(
     direction: Direction = "down",
     sweep_options: Optional[Mapping[str, Any]] = None,
     engine: Any = None,
+    band: Band = "mixture",
 ) -> polars.DataFrame:
     """A calibrated model's prediction with its uncertainty band.
 
@@ -125,21 +141,19 @@ def predict(
     runs the model at ``samples`` scrambled Sobol points (``seed``) of the
     estimates' normal, clipped to the bounds, and takes the empirical
     quantiles; ``"auto"`` uses the delta method for the smooth outputs
-    (all of these). Under a tie or "unresolved" each member (explanation)
-    gets its rows, and the ``member`` "envelope" rows cover every member's
-    band (value: the members' mean). The generic control's member of
-    "unresolved" (the unknown smooth term) predicts the baseline plus the
-    posterior mean of its model-discrepancy term (a Gaussian process in
-    speed fitted to the baseline's residuals on the training points), with
-    that term's posterior variance: its band is narrow at the measured
-    speeds and widens away from them; ``method`` "discrepancy" (a quantity
-    it was not measured on gets no term). A model with no calibrated value
-    and no discrepancy term (the baseline) has a band of zero width,
-    ``method`` "none".
+    (all of these).
+
+    Under a tie or "unresolved" each member (explanation) gets its rows
+    with its ``weight``; ``band`` chooses the combined reading:
+    ``"mixture"`` (default) the band of the weighed mixture of the members,
+    ``"envelope"`` the union of their bands (see the module docstring for
+    both, the unknown member and an "unconstrained" band).
 
     Returns a tidy frame: the condition columns, ``quantity``, ``value``,
     ``lower``, ``upper``, ``unit`` (of value and bounds), ``member`` (the
-    explanation's label; "" for a single model) and ``method``.
+    explanation's label; "" for a single model), ``method`` and
+    ``weight`` (1 for a single model, a member's weight, null on the
+    combined rows), and the ``*_beyond_measured`` columns (``thermobear.predict.extrapolation``).
 
     ``engine``: None runs a sampled band's samples (or the regimes' sweeps)
     in this process; ``"local"``, a Dask ``Client`` or a scheduler address
@@ -151,8 +165,10 @@ def predict(
     ``sweep_options``: see
     [`predict_regimes`][thermobear.predict.regimes.predict_regimes]; read the
     boundaries with [`regime_boundaries`][thermobear.regime_boundaries])."""
-    import polars as pl
+    from .extrapolation import with_extrapolation
 
+    if not isinstance(band, str) or band not in BANDS:
+        raise ConfigError(f"invalid band = {band!r}: one of {', '.join(BANDS)}")
     cm = as_calibrated(model)
     lv = check_level(level)
     samples, seed = check_arguments(method, samples, engine, what, seed)
@@ -164,12 +180,29 @@ def predict(
         measured_conditions(model)))  # fmt: skip
     quantities = quantities_for(cm.spec, what)
     used = _method_used(cm.spec, what, method)
-    members = tuple(getattr(cm, "members", ()) or ())
     opts = (lv, used, samples, seed)
+    return with_extrapolation(_bands(cm, cond, quantities, opts, engine, band), model)
+
+
+def _bands(
+    cm: Any,
+    cond: polars.DataFrame,
+    quantities: Sequence[str],
+    opts: tuple[float, str, int, int],
+    engine: Any,
+    band: str,
+) -> polars.DataFrame:
+    """The band rows of a model, or of each member and their combined
+    reading (``band``)."""
+    import polars as pl
+
+    members = tuple(getattr(cm, "members", ()) or ())
     if not members:
         return band_frame(cm, "", cond, quantities, *opts, engine=engine)
     frames = [band_frame(m, str(m.label), cond, quantities, *opts, engine=engine) for m in members]
-    return pl.concat(frames + [envelope(frames, condition_columns(cm.spec))])
+    cols = condition_columns(cm.spec)
+    combined = mixture(frames, cols, opts[0]) if band == MIXTURE else envelope(frames, cols)
+    return pl.concat(frames + [combined])
 
 
 def _method_used(spec: Any, what: str, method: str) -> str:
@@ -245,7 +278,13 @@ def band_frame(
         lower = np.where(has, value - z * total, lower)
         upper = np.where(has, value + z * total, upper)
         methods[has] = DISCREPANCY
+        if not par.names:  # nothing else of this member acts on the other quantities
+            free = ~has
+            lower = np.where(free, np.nan, lower)
+            upper = np.where(free, np.nan, upper)
+            methods[free] = UNCONSTRAINED
     n = cond.height
+    weight = getattr(model, "weight", None)
     rep = pl.concat([cond] * len(quantities))
     return rep.with_columns(
         pl.Series("quantity", np.repeat(quantities, n).tolist(), dtype=pl.String),
@@ -255,7 +294,8 @@ def band_frame(
         pl.Series("unit", [unit_of_quantity(q) for q in quantities for _ in range(n)]),
         pl.lit(member).alias("member"),
         pl.Series("method", methods.tolist(), dtype=pl.String),
-    )
+        pl.lit(1.0 if not member else weight, dtype=pl.Float64).alias("weight"),
+    ).with_columns(pl.col("lower", "upper").fill_nan(None))
 
 
 def discrepancy_part(
@@ -294,6 +334,88 @@ def envelope(frames: Sequence[polars.DataFrame], cols: Sequence[str]) -> polars.
         pl.concat(frames)
         .group_by(keys, maintain_order=True)
         .agg(pl.col("value").mean(), pl.col("lower").min(), pl.col("upper").max())
-        .with_columns(pl.lit(ENVELOPE).alias("member"), pl.lit(ENVELOPE).alias("method"))
-        .select([*cols, "quantity", "value", "lower", "upper", "unit", "member", "method"])
+        .with_columns(
+            pl.lit(ENVELOPE).alias("member"),
+            pl.lit(ENVELOPE).alias("method"),
+            pl.lit(None, dtype=pl.Float64).alias("weight"),
+        )
+        .select([*cols, "quantity", *_TAIL])
     )
+
+
+_TAIL = ("value", "lower", "upper", "unit", "member", "method", "weight")
+
+
+def mixture(
+    frames: Sequence[polars.DataFrame], cols: Sequence[str], level: float
+) -> polars.DataFrame:
+    """The rows of the weighed mixture of the members' bands (``member``
+    and ``method`` "mixture"): each member's prediction read as a normal of
+    mean ``value`` and standard deviation (upper - lower) / (2 z), weighed
+    by its ``weight`` (equal weights where the members carry none); the
+    mixture's mean and its quantiles at (1 -+ ``level``) / 2. Members with
+    an unconstrained band are left out while their weight is below
+    ``UNCONSTRAINED_WEIGHT``; above it the mixture is unconstrained."""
+    import polars as pl
+    from scipy.stats import norm
+
+    z = float(norm.ppf(0.5 + 0.5 * level))
+    k = len(frames)
+    val = np.column_stack([f["value"].to_numpy() for f in frames])
+    lo = np.column_stack([f["lower"].to_numpy().astype(float) for f in frames])
+    hi = np.column_stack([f["upper"].to_numpy().astype(float) for f in frames])
+    w = np.array([f["weight"][0] for f in frames], dtype=float) if k else np.ones(0)
+    w = np.where(np.isfinite(w), w, 1.0)
+    w = w / w.sum() if w.sum() > 0 else np.full(k, 1.0 / k)
+    free = ~(np.isfinite(lo) & np.isfinite(hi))
+    sd = np.where(free, 0.0, (hi - lo) / (2.0 * z))
+    ww = np.where(free, 0.0, w[None, :])
+    lost = np.sum(np.where(free, w[None, :], 0.0), axis=1)
+    ww = ww / np.clip(ww.sum(axis=1, keepdims=True), 1e-300, None)
+    mean = np.sum(ww * val, axis=1)
+    a = 0.5 - 0.5 * level
+    lower = mixture_quantile(val, sd, ww, a)
+    upper = mixture_quantile(val, sd, ww, 1.0 - a)
+    gone = lost > UNCONSTRAINED_WEIGHT
+    method = np.where(gone, UNCONSTRAINED, MIXTURE)
+    first = frames[0]
+    return (
+        first.select([*cols, "quantity"])
+        .with_columns(
+            pl.Series("value", np.where(gone & (ww.sum(axis=1) == 0), np.nan, mean)),
+            pl.Series("lower", np.where(gone, np.nan, lower)),
+            pl.Series("upper", np.where(gone, np.nan, upper)),
+            first["unit"],
+            pl.lit(MIXTURE).alias("member"),
+            pl.Series("method", method.tolist(), dtype=pl.String),
+            pl.lit(None, dtype=pl.Float64).alias("weight"),
+        )
+        .with_columns(pl.col("value", "lower", "upper").fill_nan(None))
+    )
+
+
+def mixture_quantile(mean: Any, sd: Any, weight: Any, p: float) -> np.ndarray:
+    """The ``p`` quantile of each row's mixture of normals (``mean``,
+    ``sd``, ``weight``: rows x members; a zero sd is a point mass), by
+    bisection of the mixture's distribution function between the
+    components' own quantiles (it lies between the least and the greatest
+    of them)."""
+    from scipy.stats import norm
+
+    m = np.asarray(mean, dtype=float)
+    s = np.asarray(sd, dtype=float)
+    w = np.asarray(weight, dtype=float)
+    zq = float(norm.ppf(p))
+    ends = m + zq * s
+    a = np.where(w > 0, ends, np.inf).min(axis=1)
+    b = np.where(w > 0, ends, -np.inf).max(axis=1)
+    a, b = np.minimum(a, b), np.maximum(a, b)
+    tiny = 1e-12 * (np.abs(m).max(axis=1, keepdims=True) + 1.0)
+    ss = np.maximum(s, tiny)
+    for _ in range(100):
+        mid = 0.5 * (a + b)
+        cdf = np.sum(w * norm.cdf((mid[:, None] - m) / ss), axis=1)
+        below = cdf < p
+        a = np.where(below, mid, a)
+        b = np.where(below, b, mid)
+    return 0.5 * (a + b)

@@ -145,9 +145,27 @@ def _frame(cols: Sequence[str], df: polars.DataFrame) -> polars.DataFrame:
     )
 
 
+def grid_keys(cols: Sequence[str]) -> tuple[str, ...]:
+    """The keys a conditions dict of a spec with condition columns ``cols``
+    may hold: ``speeds_rpm``, ``loads`` and the load columns (a bearing's
+    ``axial_n`` and a spindle's ``preload_n`` standing for each other)."""
+    loads = list(cols[1:])
+    for a, b in (("axial_n", "preload_n"), ("preload_n", "axial_n")):
+        if a in loads and b not in loads:
+            loads.append(b)
+    return ("speeds_rpm", *loads, "loads")
+
+
 def _grid(cols: Sequence[str], spec: Mapping[str, Any]) -> polars.DataFrame:
     import polars as pl
 
+    known = grid_keys(cols)
+    for key in spec:
+        if key not in known:
+            raise ConfigError(
+                f"invalid conditions key = {key!r}: not a condition of this model (known: "
+                f"{', '.join(known)}){_validate.did_you_mean(key, known)}"
+            )
     if "speeds_rpm" not in spec:
         raise ConfigError(f"invalid conditions = {dict(spec)!r}: give speeds_rpm")
     speeds = _validate.reals("speeds_rpm", spec["speeds_rpm"]).tolist()  # sign: below

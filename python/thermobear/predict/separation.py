@@ -9,8 +9,9 @@ from typing import TYPE_CHECKING, Any, Mapping, Optional, Sequence, Union
 import numpy as np
 
 from ..errors import ConfigError
-from .band import ModelOutputs, as_calibrated, discrepancy_part
+from .band import ModelOutputs, discrepancy_part
 from .conditions import What, condition_columns, condition_frame, quantities_for, unit_of_quantity
+from .model_input import as_calibrated
 from .uncertainty import delta_band, parameters_of
 
 if TYPE_CHECKING:

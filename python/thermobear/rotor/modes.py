@@ -10,6 +10,7 @@ from numpy.typing import ArrayLike
 
 from .. import _native
 from .. import _validate as val
+from .._model_hook import takes_calibrated
 from .supports import _effects, _offsets, _resolve, _speeds
 
 if TYPE_CHECKING:
@@ -22,6 +23,7 @@ if TYPE_CHECKING:
 MAX_MODES = 92
 
 
+@takes_calibrated()
 def campbell(
     spindle: Any,
     speeds_rpm: Optional[ArrayLike] = None,
@@ -55,6 +57,7 @@ def campbell(
     return pl.DataFrame(d)
 
 
+@takes_calibrated()
 def critical_speeds(
     spindle: Any,
     speeds_rpm: Optional[ArrayLike] = None,

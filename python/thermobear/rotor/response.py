@@ -98,6 +98,7 @@ def vibration(
     return frame(d)
 
 
+@takes_calibrated()
 def spectrum(
     spindle: Any,
     speed_rpm: float = 12_000.0,
@@ -122,6 +123,7 @@ def spectrum(
     return pl.DataFrame({"frequency_hz": d["frequency_hz"], "velocity_mm_s": d["velocity_mm_s"]})
 
 
+@takes_calibrated()
 def spectrum_orders(
     spindle: Any,
     speed_rpm: float = 12_000.0,

@@ -59,6 +59,7 @@ def transient(
     return pl.DataFrame(cols)
 
 
+@takes_calibrated()
 def spindle_grid(
     spindle: Spindle,
     *,
@@ -71,7 +72,10 @@ def spindle_grid(
     released): temperatures, operating preload, heat, radial displacements
     (mechanical, thermal, total) and radial stiffness with and without
     thermal effects (``k_xx_n_per_m``, ``k_xx_isothermal_n_per_m``: the front
-    pair's entry of the full tangent stiffness)."""
+    pair's entry of the full tangent stiffness). A calibrated model
+    ([`CalibratedModel`][thermobear.CalibratedModel]) stands for its spindle,
+    its preload scale on each of ``preloads_n`` (the grid reports the
+    preload it solved at)."""
     import polars as pl
 
     sp = _check(spindle)
@@ -85,6 +89,7 @@ def spindle_grid(
     return pl.DataFrame({k: np.asarray(v) for k, v in renamed_spindle_columns(dict(d)).items()})
 
 
+@takes_calibrated()
 def optimal_preload(
     spindle: Spindle,
     *,
@@ -119,6 +124,7 @@ def optimal_preload(
     )
 
 
+@takes_calibrated()
 def compensation_preload(
     spindle: Spindle,
     *,

@@ -2,20 +2,76 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Optional, Sequence
+import functools
+from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence, TypeVar
 
 from .. import _native
 from .._deprecation import renamed_kwargs
 from .._limits import cap_threads
+from .._model_hook import (
+    LOAD_SCALES,
+    MEMBER,
+    is_calibrated,
+    member_of,
+    scaled_load,
+    takes_calibrated,
+    unpack_model,
+)
 from .._types import HeatModel, Lubrication, RacewayControl
 from ..bearing.ball_bearing import Bearing, _effects_arg, register_task
-from .state import DEFAULT_SPIN_FRICTION_COEFFICIENT, _model_kwargs
+from .state import DEFAULT_SPIN_FRICTION_COEFFICIENT, HEAT_MODEL_OPTIONS, _model_kwargs
 
 if TYPE_CHECKING:
     import polars
 
+F = TypeVar("F", bound=Callable[..., Any])
+
+#: The operating columns of a points frame (a bearing's and a spindle's).
+_POINT_COLUMNS = ("speed_rpm", "axial_n", "radial_n", "preload_n")
+
+
+def _scaled_points(fn: F) -> F:
+    """Decorate a many-points call whose first argument may be a
+    calibrated model: the stated loads of its points (``axial_n``,
+    ``radial_n``, ``preload_n`` columns) are multiplied by the model's load
+    scales row by row (as ``thermal_state`` scales its loads), and the
+    result carries the stated loads as the points gave them. Of a model
+    with several members the one ``member=`` names stands for the machine
+    (``member_of``: picked once, here)."""
+
+    @functools.wraps(fn)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        if not args or not is_calibrated(args[0]):
+            return fn(*args, **kwargs)
+        import polars as pl
+
+        from ..bearing.batch import operating_frame
+
+        model = member_of(args[0], kwargs.pop(MEMBER, None))
+        _, options = unpack_model(model)
+        rest = list(args[1:])
+        given = rest.pop(0) if rest else kwargs.pop("points", None)
+        stated = operating_frame(given, _POINT_COLUMNS)
+        columns = []
+        for scale, arg in LOAD_SCALES.items():
+            if arg not in stated.columns or not (
+                scale in options or any(k.startswith(scale + "@") for k in options)
+            ):
+                continue
+            values = [None if x is None else scaled_load(options, scale, float(x))
+                      for x in stated[arg].to_list()]  # fmt: skip
+            columns.append(pl.Series(arg, values, dtype=pl.Float64))
+        scaled = stated.with_columns(columns) if columns else stated
+        out = fn(model, scaled, *rest, **kwargs)
+        changed = [c for c in stated.columns if not scaled[c].equals(stated[c])]
+        return out.with_columns(stated[c] for c in changed) if changed else out
+
+    return wrapper  # type: ignore[return-value]
+
 
 @renamed_kwargs(spin_friction="spin_friction_coefficient")
+@_scaled_points
+@takes_calibrated(lambda given: HEAT_MODEL_OPTIONS)
 def thermal_state_many(
     bearing: Bearing,
     points: Any,
@@ -55,7 +111,10 @@ def thermal_state_many(
     ``thermal_iterations``, then ``ok``, ``error_kind``, ``error``: a point that runs away
     (``ThermalRunawayError``) or does not converge is a row with its error and null outputs;
     nothing is raised for it. The same as the method ``thermobear.Bearing.thermal_state_many``; a
-    [`Spindle`][thermobear.Spindle] goes to ``thermobear.Spindle.thermal_state_many``."""
+    [`Spindle`][thermobear.Spindle] goes to ``thermobear.Spindle.thermal_state_many``. A
+    calibrated model ([`CalibratedModel`][thermobear.CalibratedModel]) stands for its machine: each
+    row is what [`thermal_state`][thermobear.thermal_state] gives for it (its options, its load
+    scales on the points' stated loads; the rows carry the stated loads)."""
     from ..bearing.batch import join_inputs, operating_frame, result_frame
     from ..errors import ConfigError
 
@@ -70,21 +129,11 @@ def thermal_state_many(
     names = ("speed_rpm", "axial_n", "radial_n")
     frame = operating_frame(points, names)
     options = _model_kwargs(
-        lubricant,
-        lubrication_factor_f0,
-        spin_friction_coefficient,
-        oil_air_temperature_c,
-        ambient_temperature_c,
-        housing_material,
-        raceway_control,
-        misalignment_rad,
-        extra_heat_w,
-        housing_conductance_scale,
-        churning_oil_fraction,
-        heat_model=heat_model,
-        lubrication=lubrication,
-        **heat,
-    )
+        lubricant, lubrication_factor_f0, spin_friction_coefficient, oil_air_temperature_c,
+        ambient_temperature_c, housing_material, raceway_control, misalignment_rad,
+        extra_heat_w, housing_conductance_scale, churning_oil_fraction,
+        heat_model=heat_model, lubrication=lubrication, **heat,
+    )  # fmt: skip
     raw = _native.thermal_state_many(
         bearing._b,
         *_speed_and_loads(frame),

@@ -16,9 +16,11 @@ from typing import Any, Optional, Sequence
 from .. import _native
 from .. import _validate as val
 from .._deprecation import renamed_kwargs
+from .._model_hook import takes_calibrated
 from .._types import HeatModel, Lubrication, RacewayControl
 from .state import (
     DEFAULT_SPIN_FRICTION_COEFFICIENT,
+    HEAT_MODEL_OPTIONS,
     _check_bearing_call,
     _heat_line,
     _HeatRows,
@@ -57,6 +59,7 @@ class IsothermalHeat(_HeatRows):
 
 
 @renamed_kwargs(spin_friction="spin_friction_coefficient")
+@takes_calibrated(lambda given: HEAT_MODEL_OPTIONS)
 def isothermal_heat(
     bearing: Any,
     speed_rpm: float,
@@ -84,7 +87,9 @@ def isothermal_heat(
     ``lubrication_factor_f0``, ``spin_friction_coefficient``, ``churning_oil_fraction``,
     ``extra_heat_w`` and the SKF keywords of ``HEAT_MODEL_OPTIONS``).
     A temperature outside the lubricant's data raises ``ConfigError``
-    naming ``oil_temperature_c``."""
+    naming ``oil_temperature_c``. A calibrated model
+    ([`CalibratedModel`][thermobear.CalibratedModel]) stands for its bearing
+    (its heat-model options; the network's do not act here)."""
     _check_bearing_call(bearing, {})  # unknown keywords: _model_kwargs names them
     # the network's boundary temperatures are not used here: neutral 40 C
     neutral = (40.0, 40.0, "aluminium")
