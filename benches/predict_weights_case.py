@@ -18,6 +18,7 @@ and how often the unknown member has the largest weight.
 
     python3 benches/predict_weights_case.py f0 50
     python3 benches/predict_weights_case.py source 30
+    python3 benches/predict_weights_case.py f0 50 50    # seeds 50-99
 """
 
 from __future__ import annotations
@@ -58,7 +59,7 @@ class _Source:
         return out
 
 
-def main(case: str, seeds: int) -> None:
+def main(case: str, seeds: int, first: int = 0) -> None:
     warnings.simplefilter("ignore")
     base = D.BearingModelSpec(tb.Bearing.preset("7008C"))
     if case == "f0":
@@ -76,7 +77,7 @@ def main(case: str, seeds: int) -> None:
     far = pl.DataFrame({"speed_rpm": FAR, "axial_n": 400.0, "radial_n": 0.0})
     true_far, base_far = truth.predict(far), base.predict(far)
     rows, unknown_first = [], []
-    for seed in range(seeds):
+    for seed in range(first, first + seeds):
         t0 = time.perf_counter()
         noise = np.random.default_rng(seed).normal(size=exact.size)
         data = cond.with_columns(
@@ -110,4 +111,6 @@ def main(case: str, seeds: int) -> None:
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "f0", int(sys.argv[2]) if len(sys.argv) > 2 else 10)
+    args = sys.argv[1:]
+    main(args[0] if args else "f0", int(args[1]) if len(args) > 1 else 10,
+         int(args[2]) if len(args) > 2 else 0)  # fmt: skip

@@ -91,7 +91,7 @@ def test_a_zeroed_probe_diagnoses_as_its_effect_as_the_relative_quantity(base, m
     assert a["lower_95"] <= F0_TRUE <= a["upper_95"], d.verdict
     assert "not explained" not in d.verdict and "structured" not in d.verdict
     # its prediction: 0 at the lowest speed, the measured change elsewhere
-    p = tb.predict(d, "measured").filter(pl.col("quantity") == CHANGE).sort("speed_rpm")
+    p = tb.predict(d, "growth").filter(pl.col("quantity") == CHANGE).sort("speed_rpm")
     got = measured.filter(pl.col("quantity") == CHANGE).sort("speed_rpm")
     assert p["value"][0] == 0.0
     assert np.all(

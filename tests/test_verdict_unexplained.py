@@ -20,6 +20,7 @@ from thermobear.diagnosis.measurements import MeasuredData, cv_folds
 from thermobear.diagnosis.plausible_data import (
     UNEXPLAINED_P_VALUE,
     constant_shifts,
+    one_speed_note,
     speeds_look_like_rad_s,
     unexplained_words,
 )
@@ -144,12 +145,16 @@ def test_a_temperature_in_kelvin_is_refused():
 
 def test_readings_that_look_wrong_warn():
     with pytest.warns(tb.PlausibilityWarning, match=r"axial_displacement_um .* in mm\?"):
-        tb.load_measurements(_table("axial_displacement_um", [0.120, 0.123, 0.126]))
+        tb.load_measurements(_table("axial_displacement_um", [0.012, 0.0123, 0.0126]))
     with pytest.warns(tb.PlausibilityWarning, match=r"heat_w = 0 at speed_rpm = 6000"):
         tb.load_measurements(_table("heat_w", [20.0, 0.0, 60.0]))
+    # one speed is no mistake for a calibration (no warning); the diagnosis,
+    # which compares speed laws, notes it
     one_speed = _table("heat_w", [20.0, 21.0, 22.0], speeds=[6000.0] * 3)
-    with pytest.warns(tb.PlausibilityWarning, match="every row is at speed_rpm = 6000"):
-        tb.load_measurements(one_speed.with_columns(pl.Series("run", ["a", "b", "c"])))
+    one_speed = tb.load_measurements(one_speed.with_columns(pl.Series("run", ["a", "b", "c"])))
+    note = one_speed_note(one_speed)
+    assert note is not None and note.startswith("every row is at speed_rpm = 6000")
+    assert one_speed_note(tb.load_measurements(_table("heat_w", [20.0, 40.0, 60.0]))) is None
     with warnings.catch_warnings():  # plausible readings: silent
         warnings.simplefilter("error", tb.PlausibilityWarning)
         tb.load_measurements(_table("axial_displacement_um", [120.0, 123.0, 126.0]))

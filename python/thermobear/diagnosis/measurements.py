@@ -203,8 +203,8 @@ def load_measurements(
     never below the quantity's ``SIGMA_FLOOR``. The unit and reading checks
     of ``thermobear.diagnosis.plausible_data`` run too: a stiffness whose
     every value is 1e4 N/m or less is refused as N/um; a displacement
-    whose every value is below 1 um, a heat of 0 at speed, a table at one
-    speed, and a change quantity (``axial_displacement_change_um``: the
+    whose every value is below 0.2 um, a heat of 0 at speed and a change
+    quantity (``axial_displacement_change_um``: the
     change from the lowest speed of that quantity at the same loads and
     run, ``thermobear.diagnosis.relative``) that does not read about 0
     there warn ([`PlausibilityWarning`][thermobear.PlausibilityWarning]).
@@ -225,7 +225,7 @@ def load_measurements(
     df = _checked_quantities(df, table)
     _checked_conditions(df, "preload_n" if preload else "axial_n")
     df = _without_duplicates(_with_sigma_and_run(df, table), duplicates)
-    check_readings(df, STATIC_QUANTITIES)  # warnings: heat 0 at speed, one speed, a zero
+    check_readings(df, STATIC_QUANTITIES)  # warnings: heat 0 at speed, a change not 0
     return df.rename({"axial_n": "preload_n"}) if preload else df
 
 

@@ -9,12 +9,13 @@ every rule with its reason on the docs page "Limits"):
   [`DataError`][thermobear.DataError] (no rolling bearing or spindle is
   that soft; the same stiffness in N/um is 1..1e4);
 * a displacement (``*_displacement*_um``, ``*_growth*_um``) whose every
-  value is below ``DISPLACEMENT_MM_MAX_UM`` (1 um) in magnitude, not all 0,
+  value is below ``DISPLACEMENT_MM_MAX_UM`` (0.2 um) in magnitude, not all 0,
   looks like mm: a [`PlausibilityWarning`][thermobear.PlausibilityWarning];
 * a heat of 0 at a speed above 0: a warning (a turning bearing makes
   friction heat: a missing reading written as 0?);
 * every row at one speed (those of quantities measured at rest left
-  out): a warning (no speed law can be fitted from one speed);
+  out): a note of the diagnosis (no speed law can be fitted from one
+  speed; a calibration at one speed is fine);
 * a change quantity (``thermobear.diagnosis.relative``) whose reading at
   its reference speed is more than 3 sigma from 0: a warning (the probe's
   zero is not among the rows).
@@ -50,7 +51,7 @@ if TYPE_CHECKING:
 STIFFNESS_N_PER_UM_MAX = 1e4
 
 #: Below this magnitude [um] in every row, a displacement looks like mm.
-DISPLACEMENT_MM_MAX_UM = 1.0
+DISPLACEMENT_MM_MAX_UM = 0.2
 
 #: How many sigma a change quantity may read away from 0 at its reference
 #: speed before a warning.
@@ -108,10 +109,10 @@ def check_units(df: polars.DataFrame, table: dict) -> None:
 
 
 def check_readings(df: polars.DataFrame, static: Collection[str] = ()) -> None:
-    """Warnings on a checked measurement table: a heat of 0 at speed,
-    every row at one speed (the rows of the ``static`` quantities, which
-    may be measured at rest, left out), a change quantity away from 0 at
-    its reference speed."""
+    """Warnings on a checked measurement table: a heat of 0 at speed, a
+    change quantity away from 0 at its reference speed. (A table at one
+    speed is no mistake for a calibration; the diagnosis, which compares
+    speed laws, says so in its notes: ``one_speed_note``.)"""
     q = df["quantity"].to_numpy().astype(str)
     sp = df["speed_rpm"].to_numpy()
     v = df["value"].to_numpy()
@@ -121,13 +122,6 @@ def check_readings(df: polars.DataFrame, static: Collection[str] = ()) -> None:
         _warn(
             f"heat_w = 0 at speed_rpm = {sp[i]:g} (row {i}): a turning bearing makes friction "
             "heat; a missing reading written as 0?"
-        )
-    moving = ~np.isin(q, list(static))
-    if moving.sum() > 1 and np.unique(sp[moving]).size == 1:
-        _warn(
-            f"every row is at speed_rpm = {sp[moving][0]:g}: no speed law can be fitted from one "
-            "speed "
-            "(a diagnosis cannot tell effects that differ in how they grow with speed)"
         )
     if not np.isin(q, list(CHANGE_OF)).any():
         return
@@ -141,6 +135,20 @@ def check_readings(df: polars.DataFrame, static: Collection[str] = ()) -> None:
             f"measured), not 0 (more than {ZERO_SIGMA:g} sigma): a change quantity is relative "
             "to its lowest speed; give the row where the probe was zeroed (value 0)"
         )
+
+
+def one_speed_note(df: polars.DataFrame, static: Collection[str] = ()) -> Optional[str]:
+    """The diagnosis note when every row (the ``static`` quantities' left
+    out) is at one speed, else None."""
+    q = df["quantity"].to_numpy().astype(str)
+    sp = df["speed_rpm"].to_numpy()
+    moving = ~np.isin(q, list(static))
+    if moving.sum() > 1 and np.unique(sp[moving]).size == 1:
+        return (
+            f"every row is at speed_rpm = {sp[moving][0]:g}: effects that differ in how they "
+            "grow with speed cannot be told apart from one speed"
+        )
+    return None
 
 
 def speeds_look_like_rad_s(speeds: Any) -> bool:

@@ -434,6 +434,12 @@ def with_weights(verdict: str, model: Any) -> str:
 
 
 def _final_notes(s: _Search, full: MeasuredData, p_final: float) -> None:
+    from .measurements import STATIC_QUANTITIES
+    from .plausible_data import one_speed_note
+
+    single = one_speed_note(full.df, STATIC_QUANTITIES)
+    if single:
+        s.notes.append(single)
     weak = [a["name"] for a in s.accepted if a.get("identified") is False]
     if weak:
         s.notes.append("calibrated together, not identified by these data: " + ", ".join(weak))

@@ -127,8 +127,10 @@ def predict(
     ``model``: a calibrated model (``Calibration.model``,
     ``Diagnosis.model``; a [`Calibration`][thermobear.Calibration] or
     [`Diagnosis`][thermobear.Diagnosis] stands for its model). ``what``:
-    ``"measured"`` (every quantity the model predicts), ``"stiffness"``,
-    ``"temperatures"``, ``"growth"`` (axial growth, bearing displacements)
+    ``"measured"`` (every quantity the model predicts but the changes from
+    a reference speed), ``"stiffness"``, ``"temperatures"``, ``"growth"``
+    (axial growth, bearing displacements and their changes from the
+    lowest speed of the conditions)
     or ``"vibration"`` (a spindle's velocity RMS); a gear model's transition
     speeds (``"measured"``; rows of its conditions) are always sampled. ``conditions``: a frame of
     ``speed_rpm`` and the loads (``axial_n``, ``radial_n``; a spindle's

@@ -66,15 +66,17 @@ def quantities_for(spec: Any, what: str) -> list[str]:
             "invalid what = 'regimes': gear regimes are no quantity of the bearing model; "
             "predict them with thermobear.predict(model, 'regimes', ...)"
         )
+    from ..diagnosis.relative import CHANGE_OF
+
     names = list(spec.quantities)
-    if what == "measured":
-        pick = names
+    if what == "measured":  # the change quantities are derived: "growth" gives them
+        pick = [q for q in names if q not in CHANGE_OF]
     elif what == "stiffness":
         pick = [q for q in names if q.endswith(("_n_per_m", "_n_m_per_rad", "_n_per_rad"))]
     elif what == "temperatures":
         pick = [q for q in names if q.endswith("_temperature_c")]
     elif what == "growth":
-        pick = [q for q in names if q in _GROWTH]
+        pick = [q for q in names if q in _GROWTH or q in CHANGE_OF]
     else:
         pick = [q for q in names if q.startswith("velocity_")]
     if not pick:
