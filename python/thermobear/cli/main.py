@@ -402,6 +402,18 @@ def _add_study(st: argparse.ArgumentParser) -> None:
     )
 
 
+def add_figure_options(p: argparse.ArgumentParser) -> None:
+    """``--format`` and ``--dpi``, shared by the subcommands that draw."""
+    p.add_argument(
+        "--format", type=_formats_arg, default=("png",), metavar="FMT[,FMT...]",
+        help="figure formats, a comma list of png, pdf, svg (default: png)",
+    )  # fmt: skip
+    p.add_argument(
+        "--dpi", type=_dpi_arg, default=200.0, metavar="DPI",
+        help="resolution of PNG figures in dots per inch (default: 200)",
+    )  # fmt: skip
+
+
 def _add_effects(e: argparse.ArgumentParser) -> None:
     e.add_argument(
         "--parameters",
@@ -449,14 +461,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="redo the calibrations that pin the seed papers' unstated inputs (minutes) "
         "into OUT/papers and use them",
     )  # fmt: skip
-    d.add_argument(
-        "--format", type=_formats_arg, default=("png",), metavar="FMT[,FMT...]",
-        help="figure formats, a comma list of png, pdf, svg (default: png)",
-    )  # fmt: skip
-    d.add_argument(
-        "--dpi", type=_dpi_arg, default=200.0, metavar="DPI",
-        help="resolution of PNG figures in dots per inch (default: 200)",
-    )  # fmt: skip
+    add_figure_options(d)
     s = add("solve", "solve a system description (TOML)", True, _cmd_solve)
     s.add_argument("config", help="path to the .toml system description")
     s.add_argument("--out", default="thermobear-out", help="output folder (default: %(default)s)")
@@ -475,7 +480,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_predict(
         add("predict", "predict a calibrated model (.json) with its band: table and figures",
             True, _cmd_predict),
-        _formats_arg, _dpi_arg,
+        add_figure_options,
     )  # fmt: skip
     _add_study(
         add("study", "run a design study (grid in TOML) into parquet chunks; resumes", True,

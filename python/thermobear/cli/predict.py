@@ -100,9 +100,9 @@ def level_arg(text: str) -> float:
         raise argparse.ArgumentTypeError(rule) from None
 
 
-def add_arguments(p: argparse.ArgumentParser, formats_arg: Any, dpi_arg: Any) -> None:
-    """The arguments of ``thermobear predict`` (``formats_arg``, ``dpi_arg``:
-    the parsers of ``--format`` and ``--dpi`` the other subcommands share)."""
+def add_arguments(p: argparse.ArgumentParser, figure_options: Any) -> None:
+    """The arguments of ``thermobear predict`` (``figure_options``: adds the
+    ``--format`` and ``--dpi`` the drawing subcommands share)."""
     p.add_argument(
         "model",
         help="a saved calibrated model (.json; calibrated_model.json of thermobear calibrate "
@@ -139,14 +139,7 @@ def add_arguments(p: argparse.ArgumentParser, formats_arg: Any, dpi_arg: Any) ->
         help="of a tie or an unresolved verdict, how the members' bands combine: "
         f"{', '.join(combined_labels())} (default: {default_band()})",
     )  # fmt: skip
-    p.add_argument(
-        "--format", type=formats_arg, default=("png",), metavar="FMT[,FMT...]",
-        help="figure formats, a comma list of png, pdf, svg (default: png)",
-    )  # fmt: skip
-    p.add_argument(
-        "--dpi", type=dpi_arg, default=200.0, metavar="DPI",
-        help="resolution of PNG figures in dots per inch (default: 200)",
-    )  # fmt: skip
+    figure_options(p)
     p.add_argument(
         "--out", required=True, help="folder for prediction.parquet, prediction.csv and figures"
     )

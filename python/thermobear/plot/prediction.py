@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any, Optional
 import numpy as np
 
 from ..errors import ConfigError
+from ..predict.band import ENVELOPE, MIXTURE
 from .axes import get_axes
 from .gear import layer_example, regime_color, regime_layer, regime_order
 from .labels import axis_label
@@ -22,9 +23,6 @@ if TYPE_CHECKING:
 
 __all__ = ["prediction_band", "regime_probability"]
 
-#: The ``member`` label of a prediction's rows that cover every member's band.
-ENVELOPE = "envelope"
-MIXTURE = "mixture"
 
 #: How a unit of a prediction frame is shown: (factor, shown unit). A
 #: stiffness reads in N/um, as engineers quote it.
