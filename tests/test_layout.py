@@ -29,6 +29,7 @@ LAYERS: list[tuple[str, ...]] = [
         "thermobear._limits",
         "thermobear._validate",
         "thermobear.plausibility",
+        "thermobear._input_checks",
         "thermobear._types",
         "thermobear._deprecation",
         "thermobear._names",

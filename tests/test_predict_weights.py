@@ -209,6 +209,16 @@ def test_an_unknown_heat_source_predicts_stiffness_from_temperatures(base):
     assert sum(ws) == pytest.approx(1.0) and all(0.0 <= w <= 1.0 for w in ws)
     assert "weight" in d.verdict and ("favoured" in d.verdict or "most weight" in d.verdict)
     assert set(pred["member"]) == {*(x.label for x in m.members), "mixture"}
+    # downstream, the member stands for its bearing with its heat law
+    _, opts = unknown[0].model()
+    heat = float(unknown_heat_w(opts, FAR[0]))
+    assert heat > 0.0
+    got = tb.thermal_state(m, FAR[0], 400.0, member=unknown[0].label)
+    assert all(float(opts.get(k, 1.0)) == 1.0 for k in ("axial_load_scale", "radial_load_scale"))
+    rest = {k: v for k, v in opts.items() if not k.startswith(("unknown_heat", "axial_load",
+                                                                "radial_load"))}  # fmt: skip
+    want = tb.thermal_state(base.bearing, FAR[0], 400.0, **{**rest, "extra_heat_w": heat})
+    assert got.temperatures.equals(want.temperatures)
     # saved and loaded, the weights and the unknown member's law come back
     back = tb.CalibratedModel.from_json(m.to_json())
     assert [x.weight for x in back.members] == ws
@@ -242,3 +252,40 @@ def test_a_discrepancy_only_member_is_unconstrained_where_it_was_not_measured():
 def test_band_choice_is_checked():
     with pytest.raises(tb.ConfigError, match="invalid band = 'union'"):
         tb.predict(object(), band="union")  # type: ignore[arg-type]
+
+
+def test_the_unknown_member_stands_for_its_bearing_in_the_thermal_calls(base):
+    """The unknown heat source acts downstream too: ``thermal_state``,
+    ``thermal_state_many``, ``isothermal_heat`` and the thermal stiffness
+    curve of the member carry its heat H(n) at each speed, equal to the
+    bearing solved by hand with that heat as ``extra_heat_w``, and to the
+    member's own prediction (two paths: the hook and the model spec)."""
+    law = {"unknown_heat_linear_w": 12.0, "unknown_heat_quadratic_w": 20.0,
+           "unknown_heat_reference_rpm": 10000.0}  # fmt: skip
+    spec = base.with_setting(**law)
+    bearing = base.bearing
+    for n in FAR:
+        heat = float(unknown_heat_w(law, n))
+        assert heat == pytest.approx(12.0 * n / 1e4 + 20.0 * (n / 1e4) ** 2)
+        by_hand = tb.thermal_state(bearing, n, 400.0, extra_heat_w=heat)
+        got = tb.thermal_state(bearing, n, 400.0, **law)
+        assert got.temperatures.equals(by_hand.temperatures)
+        extra = got.heat.filter(pl.col("source") == "extra")["heat_w"]
+        assert extra.to_list() == pytest.approx([heat], rel=1e-12)
+        iso = tb.isothermal_heat(bearing, n, 400.0, oil_temperature_c=50.0, **law)
+        iso_hand = tb.isothermal_heat(bearing, n, 400.0, oil_temperature_c=50.0, extra_heat_w=heat)
+        assert iso.total_heat_w == pytest.approx(iso_hand.total_heat_w, rel=1e-12)
+    many = tb.thermal_state_many(bearing, {"speed_rpm": [FAR[1], FAR[0], FAR[1]], "axial_n": 400.0},
+                                 **law)  # fmt: skip
+    one = [tb.thermal_state(bearing, n, 400.0, **law) for n in (FAR[1], FAR[0], FAR[1])]
+    got_t = many["outer_ring_temperature_c"].to_numpy()
+    want_t = [s.temperature_c("outer_ring") for s in one]
+    assert got_t == pytest.approx(want_t, abs=1e-6)
+    curve = tb.stiffness_curve(bearing, FAR, 400.0, mode="thermal", **law)
+    assert curve["outer_ring_temperature_c"].to_numpy() == pytest.approx(want_t[1::-1], abs=1e-6)
+    # the model spec's prediction (the path of the diagnosis) agrees
+    pred = spec.predict(pl.DataFrame({"speed_rpm": FAR, "axial_n": 400.0, "radial_n": 0.0}))
+    assert pred["outer_ring_temperature_c"] == pytest.approx(want_t[1::-1], abs=1e-6)
+    # a law needs its reference speed
+    with pytest.raises(tb.ConfigError, match="unknown_heat_reference_rpm"):
+        tb.thermal_state(bearing, 5000.0, 400.0, unknown_heat_linear_w=5.0)

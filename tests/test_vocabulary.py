@@ -264,7 +264,7 @@ def test_moment_nmm_is_converted_and_warns(bearing):
     with pytest.warns(DeprecationWarning, match="use `moment_n_m`"):
         old = bearing.solve(axial_n=500.0, moment_nmm=2000.0, misalignment_rad=None)
     np.testing.assert_allclose(old.displacement, new.displacement, rtol=1e-12)
-    with pytest.raises(TypeError, match="moment_n_m"):
+    with pytest.raises(tb.ConfigError, match="moment_n_m"):
         bearing.solve(moment_nmm=1.0, moment_n_m=1.0)
 
 

@@ -221,3 +221,12 @@ __all__ = [
     # the one name of each quantity
     "glossary",
 ]
+
+# One rule for the arguments of every public call (an unknown keyword, a
+# missing or extra argument, a wrong type: ConfigError naming it), applied
+# here once to the functions above, the methods of the public classes and
+# the figures of thermobear.plot.
+from . import _keywords as _keywords  # noqa: E402
+
+_keywords.guard_namespace(globals(), __all__)
+_keywords.guard_namespace(vars(plot), plot.__all__, prefix="plot.")

@@ -23,14 +23,18 @@ def warn_renamed(old: str, new: str, *, stacklevel: int = 2, what: str = "") -> 
 
     ``stacklevel`` counts as in ``warnings.warn`` from the caller of
     this function: the default 2 points at whoever called the function that
-    calls ``warn_renamed``. ``what`` adds a short note, for example the
-    unit change (``"value in N m, not N mm"``).
+    calls ``warn_renamed``; the warning points at least as far out as the
+    first line outside thermobear (the user's line, past the argument
+    checks every public call goes through). ``what`` adds a short note,
+    for example the unit change (``"value in N m, not N mm"``).
     """
+    from ._limits import _outside_stacklevel
+
     note = f" ({what})" if what else ""
     warnings.warn(
         f"`{old}` is deprecated; use `{new}`{note}",
         DeprecationWarning,
-        stacklevel=stacklevel + 1,
+        stacklevel=max(stacklevel + 1, _outside_stacklevel()),
     )
 
 
@@ -41,7 +45,7 @@ def renamed_kwargs(**old_to_new: Rename) -> Callable[[F], F]:
     changed too (``moment_nmm=("moment_n_m", lambda v: v / 1000.0)``): the
     old value is passed through ``convert`` before it reaches the function.
     Passing an old name warns (``DeprecationWarning``, pointing at the
-    caller); passing both the old and the new name raises ``TypeError``.
+    caller); passing both the old and the new name raises ``ConfigError``.
     """
     table: dict[str, tuple[str, Callable[[Any], Any] | None]] = {}
     for old, spec in old_to_new.items():
@@ -58,9 +62,11 @@ def renamed_kwargs(**old_to_new: Rename) -> Callable[[F], F]:
                 if old not in kwargs:
                     continue
                 if new in kwargs:
-                    raise TypeError(
-                        f"{func.__qualname__}() got both `{old}` (deprecated) and "
-                        f"`{new}`; pass only `{new}`"
+                    from .errors import ConfigError
+
+                    raise ConfigError(
+                        f"invalid {old} = {kwargs[old]!r}: {func.__qualname__}() got both "
+                        f"`{old}` (deprecated) and `{new}`; pass only `{new}`"
                     )
                 value = kwargs.pop(old)
                 warn_renamed(old, new, stacklevel=2)

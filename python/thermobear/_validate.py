@@ -150,6 +150,15 @@ def choice(name: str, value: Any, options: Iterable[Any]) -> Any:
     )
 
 
+def optional_callback(name: str, value: Any) -> Any:
+    """``value`` if it is None or callable (a ``progress(done, total)``)."""
+    if value is None or callable(value):
+        return value
+    raise fail(
+        name, value, f"None or a callable such as f(done, total), not a {type(value).__name__}"
+    )
+
+
 def text(name: str, value: Any) -> str:
     """``value`` if it is a string."""
     if isinstance(value, str):

@@ -37,6 +37,28 @@ def seed_config(name: str) -> str:
     return resources.files(_CONFIG_PACKAGE).joinpath(name + ".toml").read_text()
 
 
+def read_text_file(path: str | Path) -> str:
+    """The text of the file at ``path`` (UTF-8). A file that cannot be read,
+    or is not text (a binary file given as TOML or JSON), is a
+    ``ConfigError`` naming the file, in one line; for a file that is not
+    text its attribute ``not_text`` is True (the command line exits 2)."""
+    from .errors import ConfigError
+
+    p = Path(path)
+    try:
+        return p.read_text(encoding="utf-8")
+    except OSError as e:
+        err = ConfigError(f"{p}: cannot read: {e.strerror or e}")
+    except UnicodeDecodeError as e:
+        err = ConfigError(
+            f"{p}: cannot read: not a UTF-8 text file (byte 0x{e.object[e.start]:02x} "
+            f"at position {e.start})"
+        )
+        vars(err)["not_text"] = True
+    vars(err).update(location=(str(err), None, None), path=str(p), line=None, key=None)
+    raise err
+
+
 def load_config(path_or_text: str | Path) -> str:
     """Read a system description from a path (or take TOML text as is),
     check it on the Rust side and return the text. A ``ConfigError`` names
@@ -44,19 +66,52 @@ def load_config(path_or_text: str | Path) -> str:
     text = str(path_or_text)
     p: Optional[Path] = None
     if "\n" not in text and "=" not in text:
-        from .errors import ConfigError
-
         p = Path(text)
-        try:
-            text = p.read_text()
-        except OSError as e:
-            err = ConfigError(f"{p}: cannot read: {e.strerror or e}")
-            vars(err).update(location=(str(err), None, None), path=str(p), line=None, key=None)
-            raise err from None
-    with located_config_errors(p, text):
-        tomllib.loads(text)
-        _native.check_config(text)
+        text = read_text_file(p)
+    try:
+        with located_config_errors(p, text):
+            tomllib.loads(text)
+            _native.check_config(text)
+    except Exception as e:
+        add_preset_hint(e, text)
+        raise
     return text
+
+
+def _preset_names(key: str) -> list[str]:
+    """The preset names a key of a system description takes (none for a
+    key that takes no preset)."""
+    if key == "bearing.preset":
+        return list(_native.Bearing.preset_names())
+    if key in ("bearing.ring_material", "bearing.ball_material"):
+        return list(_native.Material.preset_names())
+    return []
+
+
+def add_preset_hint(error: BaseException, text: str) -> None:
+    """Add "; did you mean ...?" to a ``ConfigError`` about a misspelt
+    preset name in the system description ``text`` (in place: its type and
+    location attributes stay); other errors are left as they are."""
+    from ._validate import did_you_mean
+
+    key = getattr(error, "key", None)
+    if not isinstance(key, str) or "did you mean" in str(error):
+        return
+    known = _preset_names(key)
+    if not known:
+        return
+    try:
+        value: Any = tomllib.loads(text)
+        for part in key.split("."):
+            value = value[part]
+    except (tomllib.TOMLDecodeError, KeyError, TypeError):
+        return
+    hint = did_you_mean(value, known)
+    if hint:
+        error.args = (f"{error}{hint}", *error.args[1:])
+        loc = getattr(error, "location", None)
+        if loc is not None:
+            vars(error)["location"] = (f"{loc[0]}{hint}", *loc[1:])
 
 
 def read_toml(text: str) -> dict:
@@ -252,7 +307,7 @@ def located_config_errors(path: Optional[Path | str], text: Optional[str] = None
     except (ConfigError, tomllib.TOMLDecodeError) as e:
         if text is None and path is not None:
             try:
-                text = Path(path).read_text()
-            except OSError:
+                text = Path(path).read_text(encoding="utf-8")
+            except (OSError, UnicodeDecodeError):
                 text = None
         raise config_error_at(e, path, text) from None

@@ -88,7 +88,10 @@ def _changed(**changes: Any) -> Limits:
     names = [f.name for f in dataclasses.fields(Limits)]
     for k, v in changes.items():
         if k not in names:
-            raise ConfigError(f"invalid {k} = {v!r}: not a limit (limits: {', '.join(names)})")
+            raise ConfigError(
+                f"invalid {k} = {v!r}: not a limit (limits: {', '.join(names)})"
+                + _validate.did_you_mean(k, names)
+            )
         _validate.real(k, v, 0.0, open_lo=True)
     return dataclasses.replace(_CURRENT.get(), **{k: float(v) for k, v in changes.items()})
 

@@ -502,13 +502,15 @@ struct Observe<const L: usize> {
     track_state: bool,
 }
 
-/// `periods` whole mesh periods from step 0; the target-feature entry
-/// points stay this small (the per-period bookkeeping is outside), which
-/// keeps the compiler inlining every lane operation into them.
+/// Steps `from..to` of one mesh period (at most a period); the
+/// target-feature entry points stay this small (the per-period
+/// bookkeeping and the looks at the cancel flag are outside), which keeps
+/// the compiler inlining every lane operation into them.
 struct Periods<'a, const L: usize> {
     batch: &'a HelicalBatch<L>,
     x: &'a mut BatchState<L>,
-    periods: usize,
+    from: usize,
+    to: usize,
     observe: Option<&'a mut Observe<L>>,
 }
 
@@ -520,29 +522,26 @@ impl<const L: usize> Job<L> for Periods<'_, L> {
         let c = b.coef.map(|v| V::load(v));
         let per = b.grid_len() / 2;
         let mut x = load_state::<L, V>(self.x);
+        let steps = self.from..self.to.min(per);
         match self.observe {
             None => {
-                for _ in 0..self.periods {
-                    for n in 0..per {
-                        b.step_v(&c, n, &mut x);
-                    }
+                for n in steps {
+                    b.step_v(&c, n, &mut x);
                 }
             }
             Some(o) => {
                 let (mut lo, mut hi) = (V::load(&o.lo), V::load(&o.hi));
                 let (mut smin, mut smax) = (load_state::<L, V>(&o.smin), load_state::<L, V>(&o.smax));
-                for _ in 0..self.periods {
-                    for n in 0..per {
-                        b.step_v(&c, n, &mut x);
-                        let next = if n + 1 == per { 0 } else { n + 1 };
-                        let d = b.deflection_v(&c, 2 * next, &x);
-                        lo = lo.min(d);
-                        hi = hi.max(d);
-                        if o.track_state {
-                            for i in 0..14 {
-                                smin[i] = smin[i].min(x[i]);
-                                smax[i] = smax[i].max(x[i]);
-                            }
+                for n in steps {
+                    b.step_v(&c, n, &mut x);
+                    let next = if n + 1 == per { 0 } else { n + 1 };
+                    let d = b.deflection_v(&c, 2 * next, &x);
+                    lo = lo.min(d);
+                    hi = hi.max(d);
+                    if o.track_state {
+                        for i in 0..14 {
+                            smin[i] = smin[i].min(x[i]);
+                            smax[i] = smax[i].max(x[i]);
                         }
                     }
                 }
@@ -581,14 +580,19 @@ fn sample<const L: usize>(
     }
     let per = b.grid_len() / 2;
     let mut x = pack(starts);
+    let every = crate::cancel::CHECK_EVERY_STEPS;
     for p in 0..transient_periods {
-        let job = Periods {
-            batch: b,
-            x: &mut x,
-            periods: 1,
-            observe: None,
-        };
-        dispatch(isa, job);
+        for from in (0..per).step_by(every) {
+            crate::cancel::check()?;
+            let job = Periods {
+                batch: b,
+                x: &mut x,
+                from,
+                to: from + every,
+                observe: None,
+            };
+            dispatch(isa, job);
+        }
         if !all_finite(&x) {
             return Err(Error::convergence(
                 "rk4 (state diverged in transient)",
@@ -614,13 +618,17 @@ fn sample<const L: usize>(
             obs[l].push(d0[l]);
         }
         o.track_state = p == 0;
-        let job = Periods {
-            batch: b,
-            x: &mut x,
-            periods: 1,
-            observe: Some(&mut o),
-        };
-        dispatch(isa, job);
+        for from in (0..per).step_by(every) {
+            crate::cancel::check()?;
+            let job = Periods {
+                batch: b,
+                x: &mut x,
+                from,
+                to: from + every,
+                observe: Some(&mut o),
+            };
+            dispatch(isa, job);
+        }
         if !all_finite(&x) {
             return Err(Error::convergence("rk4 (state diverged)", p * per, f64::INFINITY, 0.0));
         }

@@ -15,7 +15,15 @@
 //! (after each speed for continuation sweeps, after each chunk of
 //! [`CHUNK`] speeds otherwise, and with `done` unchanged before each batch
 //! of [`LANES`] parallel speeds, so that a stop is seen quickly); returning
-//! `false` stops the work with `Error::Interrupted`.
+//! `false` stops the work with `Error::Interrupted`. Inside a speed, the
+//! integration loops look at the caller's cancel flag (`crate::cancel`,
+//! handed to every worker thread) every
+//! [`crate::cancel::CHECK_EVERY_STEPS`] steps, so a stop also ends a
+//! single long speed within a fraction of a second.
+//!
+//! Bounds: every sweep refuses more than [`MAX_STEPS_PER_PERIOD`]
+//! steps per mesh period and more than [`MAX_PERIODS`] periods in any
+//! one count (transient, recorded, Lyapunov, and their caps).
 //!
 //! Partial results: [`sweep_partial`], [`sweep_many_partial`] and
 //! [`regime_map_partial`] keep every finished speed when a speed fails or
@@ -256,7 +264,39 @@ impl PartialSweep {
     }
 }
 
+/// Most RK4 steps per mesh period a sweep takes. The step rule (a step
+/// within 0.1 x the shortest natural period) needs about 270,000 / rpm
+/// steps for seed A's pair, so this covers speeds down to a few rpm; past
+/// the need, RK4's error falls as the fourth power of the step and more
+/// steps only add round-off and time.
+pub const MAX_STEPS_PER_PERIOD: usize = 100_000;
+
+/// Most mesh periods in any one count of a sweep (transient, recorded,
+/// Lyapunov, and the caps of their adaptive extensions). The default
+/// classifier settles within 1,500 periods and decides a Lyapunov
+/// exponent within 400; every recorded period is one Poincare sample of
+/// the result.
+pub const MAX_PERIODS: usize = 100_000;
+
 fn check_config(cfg: &SweepConfig) -> Result<()> {
+    if cfg.steps_per_period > MAX_STEPS_PER_PERIOD {
+        return Err(Error::config(
+            "steps_per_period",
+            cfg.steps_per_period,
+            format!("must be at most {MAX_STEPS_PER_PERIOD}"),
+        ));
+    }
+    for (name, n) in [
+        ("transient_periods", cfg.transient_periods),
+        ("recorded_periods", cfg.recorded_periods),
+        ("lyapunov_periods", cfg.lyapunov_periods),
+        ("max_transient_periods", cfg.max_transient_periods),
+        ("lyapunov_max_periods", cfg.lyapunov_max_periods),
+    ] {
+        if n > MAX_PERIODS {
+            return Err(Error::config(name, n, format!("must be at most {MAX_PERIODS}")));
+        }
+    }
     if cfg.recorded_periods < 2 {
         return Err(Error::config(
             "recorded_periods",
@@ -534,6 +574,7 @@ fn sweep_counted<const N: usize, M: SweepModel<N>>(
     let mut slots: Vec<Option<SpeedPoint>> = vec![None; n];
     let mut failures = Vec::new();
     let mut interrupted = false;
+    let flag = crate::cancel::current();
     match direction {
         SweepDirection::Independent => {
             let all: Vec<usize> = (0..n).collect();
@@ -545,7 +586,8 @@ fn sweep_counted<const N: usize, M: SweepModel<N>>(
                             return Vec::new();
                         }
                         let runs: Vec<(&M, f64)> = ii.iter().map(|&i| (model, speeds[i])).collect();
-                        ii.iter().copied().zip(independent_points(&runs, cfg)).collect()
+                        let points = crate::cancel::with_current(flag.as_ref(), || independent_points(&runs, cfg));
+                        ii.iter().copied().zip(points).collect()
                     })
                     .collect();
                 for (i, r) in part.into_iter().flatten() {
@@ -757,20 +799,25 @@ pub fn sweep_many_partial<const N: usize, M: SweepModel<N>>(
     let threads = rayon::current_num_threads().max(1);
     let group = cont.len().div_ceil(threads).clamp(1, LANES);
     let groups: Vec<Vec<usize>> = cont.chunks(group).map(|c| c.to_vec()).collect();
+    // The caller's cancel flag reaches every part of the work.
+    let flag = crate::cancel::current();
+    let flag = flag.as_ref();
     let (cont_res, indep_res) = rayon::join(
         || -> Vec<Vec<PartialSweep>> {
             groups
                 .par_iter()
                 .map(|g| {
                     let js: Vec<(&M, SweepDirection)> = g.iter().map(|&j| jobs[j]).collect();
-                    continuation_group(&js, speeds, cfg, &counter)
+                    crate::cancel::with_current(flag, || continuation_group(&js, speeds, cfg, &counter))
                 })
                 .collect()
         },
         || -> Vec<PartialSweep> {
             indep
                 .par_iter()
-                .map(|&j| sweep_counted(jobs[j].0, speeds, jobs[j].1, cfg, &counter))
+                .map(|&j| {
+                    crate::cancel::with_current(flag, || sweep_counted(jobs[j].0, speeds, jobs[j].1, cfg, &counter))
+                })
                 .collect()
         },
     );
@@ -1067,6 +1114,7 @@ pub fn regime_map_partial(
     let mut failures = Vec::new();
     let mut interrupted = false;
     let all: Vec<usize> = (0..cells.len()).collect();
+    let flag = crate::cancel::current();
     for chunk in all.chunks(CHUNK) {
         let part: Vec<Vec<(usize, Result<SpeedPoint>)>> = chunk
             .par_chunks(LANES)
@@ -1078,7 +1126,8 @@ pub fn regime_map_partial(
                     .iter()
                     .map(|&c| (&models[cells[c].0].2, speeds_rpm[cells[c].1]))
                     .collect();
-                group.iter().copied().zip(independent_points(&runs, cfg)).collect()
+                let points = crate::cancel::with_current(flag.as_ref(), || independent_points(&runs, cfg));
+                group.iter().copied().zip(points).collect()
             })
             .collect();
         for (c, r) in part.into_iter().flatten() {
@@ -1188,5 +1237,150 @@ mod tests {
         })
         .unwrap();
         assert_eq!(seen.into_inner().unwrap(), vec![(1, 3), (2, 3), (3, 3)]);
+    }
+
+    #[test]
+    fn sweeps_refuse_counts_past_their_bounds() {
+        let osc = BacklashOscillator::new(0.05, 0.1, 0.1, 0.0).unwrap();
+        let ok = |_: usize, _: usize| true;
+        let cfg = SweepConfig::default();
+        let fine = SweepConfig {
+            steps_per_period: MAX_STEPS_PER_PERIOD + 1,
+            ..cfg
+        };
+        let e = sweep(&osc, &[1.0], SweepDirection::Up, &fine, &ok)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("steps_per_period") && e.contains("at most 100000"), "{e}");
+        let long = SweepConfig {
+            transient_periods: 1_000_000_000,
+            ..cfg
+        };
+        let e = sweep(&osc, &[1.0], SweepDirection::Up, &long, &ok)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("transient_periods") && e.contains("at most 100000"), "{e}");
+    }
+
+    use std::sync::Arc;
+
+    /// x' = -x that raises `flag` once `calls` reaches `after` right-hand
+    /// sides (4 a step), shared by every speed.
+    struct RaisingOde {
+        calls: Arc<AtomicUsize>,
+        after: usize,
+        flag: Arc<AtomicBool>,
+    }
+
+    impl super::super::ode::OdeSystem<1> for RaisingOde {
+        fn rhs(&self, _t: f64, x: &[f64; 1], dx: &mut [f64; 1]) {
+            if self.calls.fetch_add(1, Ordering::Relaxed) + 1 == self.after {
+                self.flag.store(true, Ordering::Relaxed);
+            }
+            dx[0] = -x[0];
+        }
+    }
+
+    struct Raising {
+        calls: Arc<AtomicUsize>,
+        after: usize,
+        flag: Arc<AtomicBool>,
+    }
+
+    impl SweepModel<1> for Raising {
+        type System = super::super::ode::Gridded<RaisingOde>;
+        fn system_at(&self, _speed: f64, steps_per_period: usize) -> Result<Self::System> {
+            let ode = RaisingOde {
+                calls: Arc::clone(&self.calls),
+                after: self.after,
+                flag: Arc::clone(&self.flag),
+            };
+            Ok(super::super::ode::Gridded::new(ode, 1.0, steps_per_period))
+        }
+        fn deflection(&self, _sys: &Self::System, _n: usize, x: &[f64; 1]) -> f64 {
+            x[0]
+        }
+        fn half_backlash(&self) -> f64 {
+            1.0
+        }
+        fn initial_state(&self, _speed: f64) -> Result<[f64; 1]> {
+            Ok([1.0])
+        }
+    }
+
+    #[test]
+    fn the_cancel_flag_stops_a_sweep_inside_one_speed() {
+        // Each speed is 50,000 periods of 100,000 steps (5e9 steps); the
+        // flag rises after 10,000 steps, long before the first period ends.
+        let cfg = SweepConfig {
+            transient_periods: 50_000,
+            recorded_periods: 2,
+            steps_per_period: MAX_STEPS_PER_PERIOD,
+            lyapunov_periods: 0,
+            ..SweepConfig::default()
+        };
+        let every = crate::cancel::CHECK_EVERY_STEPS;
+        let speeds = [1.0, 2.0];
+        for dir in [SweepDirection::Up, SweepDirection::Independent] {
+            let model = Raising {
+                calls: Arc::new(AtomicUsize::new(0)),
+                after: 40_000,
+                flag: Arc::new(AtomicBool::new(false)),
+            };
+            let calls = Arc::clone(&model.calls);
+            let flag = Arc::clone(&model.flag);
+            let hook_calls = AtomicUsize::new(0);
+            let hook = |_: usize, _: usize| {
+                hook_calls.fetch_add(1, Ordering::Relaxed);
+                true
+            };
+            // The flag is installed on this thread only; the independent
+            // sweep's speeds run on rayon's threads and still see it.
+            let p = crate::cancel::with_flag(&flag, || sweep_partial(&model, &speeds, dir, &cfg, &hook)).unwrap();
+            assert!(p.interrupted && p.failures.is_empty(), "{dir:?}: {:?}", p.failures);
+            assert_eq!(p.not_run, vec![0, 1], "{dir:?}");
+            assert!(p.result.points.is_empty());
+            assert!(matches!(p.into_result(), Err(Error::Interrupted)));
+            // Every speed running stops at its next look at the flag.
+            let steps = calls.load(Ordering::Relaxed) / 4;
+            assert!(
+                steps >= 10_000 && steps <= 10_000 + speeds.len() * every,
+                "{dir:?}: {steps} steps"
+            );
+        }
+    }
+
+    #[test]
+    fn the_cancel_flag_stops_a_regime_map_cell_of_the_gear_pair() {
+        use super::super::gear_model::HelicalPairParams;
+        // One cell of 1e9 lock-step steps (minutes); a stop 0.1 s in.
+        let base = HelicalSweep {
+            pair: HelicalPair::new(HelicalPairParams::seed_a()).unwrap(),
+            bearings: BearingSchedule::constant(2.0e8, 5.0e7).unwrap(),
+        };
+        let cfg = SweepConfig {
+            transient_periods: 10_000,
+            recorded_periods: 2,
+            steps_per_period: MAX_STEPS_PER_PERIOD,
+            lyapunov_periods: 0,
+            ..SweepConfig::default()
+        };
+        let flag = Arc::new(AtomicBool::new(false));
+        let raise = {
+            let flag = Arc::clone(&flag);
+            std::thread::spawn(move || {
+                std::thread::sleep(std::time::Duration::from_millis(100));
+                flag.store(true, Ordering::Relaxed);
+                std::time::Instant::now()
+            })
+        };
+        let map = crate::cancel::with_flag(&flag, || {
+            regime_map_partial(&base, &[100.0], &[1.0], &[10_000.0], &cfg, &|_, _| true)
+        })
+        .unwrap();
+        let latency = raise.join().unwrap().elapsed();
+        eprintln!("regime map cell stopped {latency:?} after the flag");
+        assert!(map.interrupted && map.cells.is_empty() && map.failures.is_empty());
+        assert_eq!(map.not_run, vec![0]);
     }
 }

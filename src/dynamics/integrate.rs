@@ -87,6 +87,26 @@ pub fn rk4_advance<const N: usize, S: GridOde<N>>(sys: &S, x: &mut [f64; N], n0:
     n
 }
 
+/// As [`rk4_advance`], looking at the cancel flag every
+/// [`crate::cancel::CHECK_EVERY_STEPS`] steps: `Err(Error::Interrupted)`
+/// after a stop (`x` then holds the state reached).
+pub fn rk4_advance_checked<const N: usize, S: GridOde<N>>(
+    sys: &S,
+    x: &mut [f64; N],
+    n0: usize,
+    steps: usize,
+) -> Result<usize> {
+    let mut n = n0;
+    let mut left = steps;
+    while left > 0 {
+        crate::cancel::check()?;
+        let chunk = left.min(crate::cancel::CHECK_EVERY_STEPS);
+        n = rk4_advance(sys, x, n, chunk);
+        left -= chunk;
+    }
+    Ok(n)
+}
+
 /// As [`rk4_advance`], calling `observe(n_after, &x)` after every step.
 pub fn rk4_advance_observe<const N: usize, S: GridOde<N>, F: FnMut(usize, &[f64; N])>(
     sys: &S,
@@ -386,6 +406,23 @@ mod tests {
     use crate::dynamics::ode::Gridded;
 
     use crate::dynamics::ode::test_systems::Harmonic;
+
+    #[test]
+    fn rk4_advance_checked_matches_rk4_advance_and_stops_on_the_flag() {
+        let g = Gridded::new(Harmonic(1.0), 1.0, 100);
+        let (mut a, mut b) = ([1.0, 0.0], [1.0, 0.0]);
+        let steps = 3 * crate::cancel::CHECK_EVERY_STEPS + 7;
+        assert_eq!(
+            rk4_advance_checked(&g, &mut a, 3, steps).unwrap(),
+            rk4_advance(&g, &mut b, 3, steps)
+        );
+        assert_eq!(a, b);
+        let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(true));
+        let r = crate::cancel::with_flag(&flag, || rk4_advance_checked(&g, &mut a, 0, steps));
+        assert!(matches!(r, Err(Error::Interrupted)));
+        // Nothing was integrated past the stop.
+        assert_eq!(a, b);
+    }
 
     #[test]
     fn rk4_is_fourth_order_on_harmonic_oscillator() {

@@ -72,7 +72,10 @@ pub fn largest_lyapunov_benettin<const N: usize, S: GridOde<N>>(
     let per = (sys.grid_len() / 2).max(1);
     let mut n = n0 % per;
     let mut x = *x0;
-    for _ in 0..cfg.transient_steps {
+    for k in 0..cfg.transient_steps {
+        if k % crate::cancel::CHECK_EVERY_STEPS == 0 {
+            crate::cancel::check()?;
+        }
         rk4_step_grid(sys, n, &mut x);
         n = (n + 1) % per;
     }
@@ -85,9 +88,11 @@ pub fn largest_lyapunov_benettin<const N: usize, S: GridOde<N>>(
     let mut sum_log = 0.0;
     let mut done = 0;
     while done < cfg.measure_steps {
-        crate::cancel::check()?;
         let chunk = cfg.renorm_steps.min(cfg.measure_steps - done);
-        for _ in 0..chunk {
+        for k in 0..chunk {
+            if k % crate::cancel::CHECK_EVERY_STEPS == 0 {
+                crate::cancel::check()?;
+            }
             sys.rk4_step_pair(n, &mut x, &mut y);
             n = (n + 1) % per;
         }
@@ -200,8 +205,10 @@ pub fn largest_lyapunov_blocks<const N: usize, S: GridOde<N>>(
     loop {
         let mut sum_log = 0.0;
         for _ in 0..cfg.renorms_per_block {
-            crate::cancel::check()?;
-            for _ in 0..cfg.renorm_steps {
+            for k in 0..cfg.renorm_steps {
+                if k % crate::cancel::CHECK_EVERY_STEPS == 0 {
+                    crate::cancel::check()?;
+                }
                 sys.rk4_step_pair(n, &mut x, &mut y);
                 n = (n + 1) % per;
             }
@@ -250,7 +257,10 @@ pub fn largest_lyapunov_variational<const N: usize, S: OdeSystem<N>>(
     positive("step", h)?;
     let mut x = *x0;
     let mut t = t0;
-    for _ in 0..cfg.transient_steps {
+    for k in 0..cfg.transient_steps {
+        if k % crate::cancel::CHECK_EVERY_STEPS == 0 {
+            crate::cancel::check()?;
+        }
         rk4_step(sys, t, h, &mut x);
         t += h;
     }
@@ -266,9 +276,11 @@ pub fn largest_lyapunov_variational<const N: usize, S: OdeSystem<N>>(
     let mut sum_log = 0.0;
     let mut done = 0;
     while done < cfg.measure_steps {
-        crate::cancel::check()?;
         let chunk = cfg.renorm_steps.min(cfg.measure_steps - done);
-        for _ in 0..chunk {
+        for k in 0..chunk {
+            if k % crate::cancel::CHECK_EVERY_STEPS == 0 {
+                crate::cancel::check()?;
+            }
             tangent_rk4_step(sys, t, h, &mut x, &mut v);
             t += h;
         }

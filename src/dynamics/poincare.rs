@@ -25,7 +25,10 @@ pub struct PoincareRecord<const N: usize> {
 /// Integrate `transient_periods` periods from `x0` (at period start), then
 /// `recorded_periods` more, sampling the state once per period and the
 /// observable `obs(n, x)` (n = step index within the period) after every step.
-/// A non-finite state returns `Error::Convergence` naming the RK4 run.
+/// A non-finite state returns `Error::Convergence` naming the RK4 run; a
+/// stop (`crate::cancel`, looked at every
+/// [`crate::cancel::CHECK_EVERY_STEPS`] steps and at each period start)
+/// returns `Error::Interrupted`.
 pub fn poincare_sample<const N: usize, S: GridOde<N>, F: Fn(usize, &[f64; N]) -> f64>(
     sys: &S,
     x0: &[f64; N],
@@ -38,8 +41,12 @@ pub fn poincare_sample<const N: usize, S: GridOde<N>, F: Fn(usize, &[f64; N]) ->
     }
     let per = (sys.grid_len() / 2).max(1);
     let mut x = *x0;
+    let every = crate::cancel::CHECK_EVERY_STEPS;
     for p in 0..transient_periods {
         for n in 0..per {
+            if n % every == 0 {
+                crate::cancel::check()?;
+            }
             rk4_step_grid(sys, n, &mut x);
         }
         if !x.iter().all(|v| v.is_finite()) {
@@ -60,6 +67,9 @@ pub fn poincare_sample<const N: usize, S: GridOde<N>, F: Fn(usize, &[f64; N]) ->
         points.push(x);
         observable.push(obs(0, &x));
         for n in 0..per {
+            if n % every == 0 {
+                crate::cancel::check()?;
+            }
             rk4_step_grid(sys, n, &mut x);
             let next = if n + 1 == per { 0 } else { n + 1 };
             let o = obs(next, &x);
@@ -116,5 +126,53 @@ mod tests {
         }
         assert!((r.observable_max - amp).abs() < 1e-4);
         assert!((r.observable_min + amp).abs() < 1e-4);
+    }
+
+    /// x' = -x that raises the cancel flag after `after` right-hand sides.
+    struct Raises {
+        calls: std::sync::atomic::AtomicUsize,
+        after: usize,
+        flag: std::sync::Arc<std::sync::atomic::AtomicBool>,
+    }
+
+    impl OdeSystem<1> for Raises {
+        fn rhs(&self, _t: f64, x: &[f64; 1], dx: &mut [f64; 1]) {
+            use std::sync::atomic::Ordering;
+            if self.calls.fetch_add(1, Ordering::Relaxed) + 1 == self.after {
+                self.flag.store(true, Ordering::Relaxed);
+            }
+            dx[0] = -x[0];
+        }
+    }
+
+    #[test]
+    fn a_stop_ends_the_run_inside_one_long_period() {
+        use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+        use std::sync::Arc;
+        // One period of a million steps; the flag rises after ~10,000 steps
+        // (4 right-hand sides a step), in the transient and in the record.
+        let every = crate::cancel::CHECK_EVERY_STEPS;
+        for (transient, recorded) in [(3, 2), (0, 3)] {
+            let flag = Arc::new(AtomicBool::new(false));
+            let sys = Raises {
+                calls: AtomicUsize::new(0),
+                after: 40_000,
+                flag: Arc::clone(&flag),
+            };
+            let g = Gridded::new(sys, 1.0, 1_000_000);
+            let r = crate::cancel::with_flag(&flag, || poincare_sample(&g, &[1.0], transient, recorded, |_, x| x[0]));
+            assert!(matches!(r, Err(Error::Interrupted)), "{r:?}");
+            let steps = g.system.calls.load(Ordering::Relaxed) / 4;
+            // Stopped at the next look at the flag: within one check interval.
+            assert!((10_000..=10_000 + every).contains(&steps), "{steps} steps");
+        }
+        // Without a flag the same run completes.
+        let sys = Raises {
+            calls: AtomicUsize::new(0),
+            after: 40,
+            flag: Arc::new(AtomicBool::new(false)),
+        };
+        let g = Gridded::new(sys, 1.0, 10_000);
+        assert!(poincare_sample(&g, &[1.0], 0, 2, |_, x| x[0]).is_ok());
     }
 }

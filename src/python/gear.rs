@@ -7,7 +7,8 @@
 //! (`Python::check_signals`) and forwards progress to the Python callback
 //! (a callback that returns False stops the work: `thermobear.Interrupted`).
 //! The engine's progress hook only reads an atomic "cancel" flag, so it
-//! never touches Python.
+//! never touches Python; the same flag is the worker's `crate::cancel`
+//! flag, which the integration loops look at inside each speed.
 
 use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -47,7 +48,9 @@ where
     R: Send,
     W: FnOnce(&(dyn Fn(usize, usize) -> bool + Sync)) -> Result<R> + Send,
 {
-    let cancel = AtomicBool::new(false);
+    // Also the worker's cancel flag (`crate::cancel`): the integration
+    // loops inside a speed look at it, so a stop ends a long speed too.
+    let cancel = std::sync::Arc::new(AtomicBool::new(false));
     let done = AtomicUsize::new(0);
     let total = AtomicUsize::new(0);
     std::thread::scope(|s| {
@@ -57,7 +60,7 @@ where
                 total.store(t, Ordering::Relaxed);
                 !cancel.load(Ordering::Relaxed)
             };
-            work(&hook)
+            crate::cancel::with_flag(&cancel, || work(&hook))
         });
         let mut pending: Option<PyErr> = None;
         let mut reported = 0;
@@ -818,8 +821,16 @@ fn sweep_config(
         recorded_periods: record_periods,
         steps_per_period,
         lyapunov_periods,
-        max_transient_periods: 1500.max(5 * transient_periods),
-        lyapunov_max_periods: 400.max(4 * lyapunov_periods),
+        // The default caps stay within the sweeps' bound on periods (the
+        // counts themselves are checked against it by the sweep).
+        max_transient_periods: 1500
+            .max(transient_periods.saturating_mul(5))
+            .min(crate::dynamics::bifurcation::MAX_PERIODS)
+            .max(transient_periods),
+        lyapunov_max_periods: 400
+            .max(lyapunov_periods.saturating_mul(4))
+            .min(crate::dynamics::bifurcation::MAX_PERIODS)
+            .max(lyapunov_periods),
         ..SweepConfig::default()
     };
     let Some(settings) = settings else {
@@ -1343,7 +1354,7 @@ pub fn largest_lyapunov_gear(
     if block_periods == 0 {
         return Err(Error::config("block_periods", 0, "must be at least 1")).py_err();
     }
-    if periods < 2 * block_periods {
+    if periods < block_periods.saturating_mul(2) {
         return Err(Error::config(
             "periods",
             periods,
@@ -1351,11 +1362,22 @@ pub fn largest_lyapunov_gear(
         ))
         .py_err();
     }
+    use crate::dynamics::bifurcation::{MAX_PERIODS, MAX_STEPS_PER_PERIOD};
+    for (name, n, max) in [
+        ("steps_per_period", steps_per_period, MAX_STEPS_PER_PERIOD),
+        ("periods", periods, MAX_PERIODS),
+        ("transient_periods", transient_periods, MAX_PERIODS),
+    ] {
+        if n > max {
+            return Err(Error::config(name, n, format!("must be at most {max}"))).py_err();
+        }
+    }
     let pair = system.pair_at(speed_rpm)?;
     let est = super::parallel::watched(py, 1, None, move |_, _| -> Result<(f64, f64, usize, f64)> {
         let sys = pair.system(speed_rpm, steps_per_period)?;
         let mut x0 = pair.static_state()?;
-        crate::dynamics::integrate::rk4_advance(&sys, &mut x0, 0, transient_periods * steps_per_period);
+        // Looks at the cancel flag as it goes: Ctrl-C ends a long transient.
+        crate::dynamics::integrate::rk4_advance_checked(&sys, &mut x0, 0, transient_periods * steps_per_period)?;
         // Scales: backlash for displacements, backlash x mesh frequency for velocities.
         let b = pair.params().half_backlash_m;
         let v = b / sys.period_s();

@@ -24,7 +24,7 @@ from .._deprecation import renamed_kwargs, warn_renamed
 from .._limits import cap_threads
 from .._names import renamed_columns
 from .._types import RacewayControl
-from ..errors import ConvergenceError
+from ..errors import ConfigError, ConvergenceError
 from .material import Material, _native_material
 
 if TYPE_CHECKING:
@@ -68,7 +68,18 @@ class Bearing:
     # -- construction -------------------------------------------------
     @classmethod
     def preset(cls, name: str) -> "Bearing":
-        return cls(_native.Bearing.preset(name))
+        """A built-in bearing by its name, one of
+        [`preset_names`][thermobear.Bearing.preset_names]."""
+        if not isinstance(name, str):
+            known = ", ".join(_native.Bearing.preset_names())
+            raise v.fail("name", name, f"a bearing preset name (a string): one of {known}")
+        try:
+            return cls(_native.Bearing.preset(name))
+        except ConfigError as e:
+            hint = v.did_you_mean(name, _native.Bearing.preset_names())
+            if hint:
+                e.args = (f"{e}{hint}", *e.args[1:])
+            raise
 
     @staticmethod
     def preset_names() -> list[str]:
@@ -93,7 +104,7 @@ class Bearing:
     ) -> "Bearing":
         """A deep-groove bearing; the free contact angle follows from the
         clearance, cos(alpha0) = 1 - Pd / (2 (f_i + f_o - 1) D)."""
-        return cls(
+        return cls._checked(
             _native.Bearing.deep_groove(
                 v.whole("ball_count", ball_count, 1, 10_000),
                 _dim("ball_diameter_mm", ball_diameter_mm),
@@ -128,7 +139,7 @@ class Bearing:
         name: Optional[str] = None,
     ) -> "Bearing":
         """An angular-contact bearing from its free contact angle."""
-        return cls(
+        return cls._checked(
             _native.Bearing.angular_contact(
                 v.whole("ball_count", ball_count, 1, 10_000),
                 _dim("ball_diameter_mm", ball_diameter_mm),
@@ -150,7 +161,16 @@ class Bearing:
         """The ``[bearing]`` of a system description file or text."""
         from ..config import load_config
 
-        return cls(_native.Bearing.from_toml(load_config(path_or_text)))
+        return cls._checked(_native.Bearing.from_toml(load_config(path_or_text)))
+
+    @classmethod
+    def _checked(cls, native: Any) -> "Bearing":
+        """A bearing built from the user's dimensions, its plausibility
+        checked (``thermobear._input_checks``; the presets need none)."""
+        from .._input_checks import check_bearing_geometry
+
+        check_bearing_geometry(native.geometry(), native.bearing_type)
+        return cls(native)
 
     # -- properties ---------------------------------------------------
     @property
@@ -302,7 +322,7 @@ class Bearing:
             arrays[3],
             **options,
             threads=cap_threads(threads),
-            progress=progress,
+            progress=v.optional_callback("progress", progress),
         )
         plausibility.check_speeds(arrays[3], self._pitch_mm(), None)
         # a row whose contact reaches past the groove is a failed row, as in solve

@@ -29,6 +29,7 @@ def operating_frame(points: Any, columns: Sequence[str]) -> polars.DataFrame:
     if isinstance(points, pl.DataFrame):
         frame = points
     elif isinstance(points, Mapping):
+        points = {k: _flat_column(k, v) for k, v in points.items()}
         lengths = {len(np.atleast_1d(v)) for v in points.values() if np.ndim(v) > 0}
         if len(lengths) > 1:
             raise ConfigError(f"invalid points = columns of lengths {sorted(lengths)}: need one")
@@ -50,6 +51,22 @@ def operating_frame(points: Any, columns: Sequence[str]) -> polars.DataFrame:
         if c in frame.columns and not frame.schema[c].is_numeric():
             raise ConfigError(f"invalid {c} = column of {frame.schema[c]}: must be numeric")
     return frame
+
+
+def _flat_column(name: Any, values: Any) -> Any:
+    """A column of a mapping of points: one value or a flat sequence of
+    values (an array of them); nested lists are refused by name."""
+    from .._validate import fail
+
+    if isinstance(values, (str, bytes)):
+        return values  # a text column, carried through
+    try:
+        arr = np.asarray(values)
+    except (ValueError, TypeError):  # ragged nesting
+        arr = None
+    if arr is None or arr.ndim > 1 or (arr.dtype == object and any(np.ndim(x) for x in arr.flat)):
+        raise fail(str(name), values, "one value or a flat sequence of values, one per point")
+    return arr
 
 
 def column_array(frame: Any, name: str, default: float = 0.0) -> np.ndarray:

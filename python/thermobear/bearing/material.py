@@ -26,6 +26,7 @@ class Material:
     """
 
     def __init__(self, name: str, base: Optional[str] = None, **properties: float) -> None:
+        from .._validate import did_you_mean
         from ..errors import ConfigError
 
         unknown = set(properties) - set(_MATERIAL_FIELDS)
@@ -33,6 +34,7 @@ class Material:
             raise ConfigError(
                 f"invalid material property = {sorted(unknown)[0]}: unknown; known: "
                 + ", ".join(_MATERIAL_FIELDS)
+                + did_you_mean(sorted(unknown)[0], _MATERIAL_FIELDS)
             )
         values: dict[str, Any] = {}
         if base is not None:

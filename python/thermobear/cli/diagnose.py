@@ -104,15 +104,16 @@ def diagnose_files(
     spindle: Optional[str] = None,
     without: Sequence[str] = (),
     candidates: Optional[Sequence[str]] = None,
-    holdout: Union[str, float, Sequence[str], None] = AUTO_HOLDOUT,
+    holdout: Union[str, float, Sequence[str], None] = "highest_speeds",
 ) -> tuple[Diagnosis, list[Path]]:
     """``thermobear diagnose``: diagnose a measurement file (CSV lines
     starting with ``#`` are comments) against a baseline -- a bearing system
     description (``system``, TOML) or a spindle preset (``spindle``, e.g.
     "seed-ceramic-spindle") -- with the effects in ``without`` (names, or
     "thermal_displacement" for a spindle) switched off; ``candidates`` and
-    ``holdout`` as [`thermobear.diagnose`][thermobear.diagnose] takes them (``"auto"``: the
-    highest speeds with three or more distinct speeds, else none); write
+    ``holdout`` as [`thermobear.diagnose`][thermobear.diagnose] takes them, with its default
+    (``"auto"`` as well: the highest speeds with three or more distinct speeds,
+    else none); write
     tables (gap, audit, screening, points) and figures into ``out`` when
     given, with the diagnosis' calibrated model (``calibrated_model.json``,
     [`CalibratedModel.load`][thermobear.CalibratedModel.load] reads it back,

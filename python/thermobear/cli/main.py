@@ -101,8 +101,9 @@ def _names_arg(text: str) -> list[str]:
 def _holdout_arg(text: str) -> Any:
     """``--holdout``: ``highest_speeds``, ``none``, a fraction of the
     distinct speeds in (0, 1), or ``run:LABEL[,LABEL...]`` (run labels);
-    ``auto`` (the default) holds out the highest speeds when the data have
-    three or more distinct speeds."""
+    ``auto`` holds out the highest speeds when the data have three or more
+    distinct speeds. The default is ``highest_speeds``, as in
+    [`thermobear.diagnose`][thermobear.diagnose]."""
     t = text.strip()
     if t in ("auto", "highest_speeds"):
         return t
@@ -271,6 +272,8 @@ def _cmd_study(args: argparse.Namespace) -> int:
         progress=False if args.no_progress else None,
         overwrite=args.overwrite,
         threads=args.threads,
+        max_points=args.max_points,
+        max_steps=args.max_steps,
     )
     print(f"thermobear study: {report}")
     return EXIT_OK
@@ -344,12 +347,12 @@ def _add_diagnose(g: argparse.ArgumentParser) -> None:
     g.add_argument(
         "--holdout",
         type=_holdout_arg,
-        default="auto",
+        default="highest_speeds",
         metavar="SPEC",
         help="points of the extrapolation check: highest_speeds (the top quarter of the "
         "distinct speeds), a fraction of the distinct speeds (0.25), run:LABEL[,LABEL...] "
-        "(runs), or none (default: auto = highest_speeds with 3 or more distinct speeds, "
-        "else none)",
+        "(runs), none, or auto (highest_speeds with 3 or more distinct speeds, else none; "
+        "default: highest_speeds, as the Python API)",
     )
     g.add_argument(
         "--out",
@@ -400,6 +403,14 @@ def _add_study(st: argparse.ArgumentParser) -> None:
         action="store_true",
         help="start --out afresh, whatever it holds (another grid, damaged files)",
     )
+    st.add_argument(
+        "--max-points", type=int, default=None, metavar="N",
+        help="the most points the grid may have (default: the file's max_points, or 1000000)",
+    )  # fmt: skip
+    st.add_argument(
+        "--max-steps", type=int, default=None, metavar="N",
+        help="the most time steps of a gear study (default: the file's max_steps, or 1e10)",
+    )  # fmt: skip
 
 
 def add_figure_options(p: argparse.ArgumentParser) -> None:
@@ -551,7 +562,13 @@ def _main(argv: Optional[Sequence[str]]) -> int:
         if debug:
             traceback.print_exc()
         print(f"thermobear: error: {_one_line(e)}", file=sys.stderr)
-        return EXIT_ERROR
+        # a binary file given where a text file (TOML, JSON) goes: a usage error
+        return EXIT_USAGE if getattr(e, "not_text", False) else EXIT_ERROR
+    except UnicodeDecodeError as e:  # a binary file read past the checked readers
+        if debug:
+            traceback.print_exc()
+        print(f"thermobear: error: a file given is not UTF-8 text ({e.reason})", file=sys.stderr)
+        return EXIT_USAGE
     except OSError as e:  # an output folder that cannot be written, a file gone
         if debug:
             traceback.print_exc()

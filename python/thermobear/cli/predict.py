@@ -90,7 +90,7 @@ def band_arg(text: str) -> str:
 
 
 def level_arg(text: str) -> float:
-    """``--level``: the band's probability, in (0, 1)."""
+    """``--level``: the band's probability, in [0.5, 0.999] (``check_level``)."""
     from ..predict.uncertainty import check_level
 
     try:
@@ -127,7 +127,7 @@ def add_arguments(p: argparse.ArgumentParser, figure_options: Any) -> None:
     )  # fmt: skip
     p.add_argument(
         "--level", type=level_arg, default=0.95, metavar="P",
-        help="probability of the band, in (0, 1) (default: %(default)s)",
+        help="probability of the band, in [0.5, 0.999] (default: %(default)s)",
     )  # fmt: skip
     p.add_argument(
         "--member", default=None, metavar="LABEL",
@@ -155,8 +155,8 @@ def load_model(path: Path) -> Any:
 
     try:
         return CalibratedModel.load(path)
-    except ConfigError as e:
-        raise ConfigError(f"{path}: {e}") from None
+    except ConfigError as e:  # the load names the path already
+        raise ConfigError(str(e) if str(path) in str(e) else f"{path}: {e}") from None
 
 
 def prediction_conditions(
@@ -188,6 +188,17 @@ def prediction_conditions(
         f"invalid model = {type(model.spec).__name__}: thermobear predict takes a bearing or "
         "a spindle model"
     )
+
+
+def check_what(model: Any, what: str) -> None:
+    """``UsageError`` when the model predicts none of the quantities of
+    ``--what`` (``--what vibration`` for a bearing model)."""
+    from ..predict.conditions import quantities_for
+
+    try:
+        quantities_for(model.spec, what)
+    except ConfigError as e:
+        raise UsageError(f"--what {what}: {e}") from None
 
 
 def combined_labels() -> tuple[str, ...]:
@@ -300,6 +311,7 @@ def predict_files(
 
     model = load_model(Path(model_path))
     conditions = prediction_conditions(model, speeds_rpm, loads_n, preloads_n)
+    check_what(model, what)
     options: dict[str, Any] = {"level": level}
     if member is not None:
         check_member(model, member, band)

@@ -17,12 +17,17 @@ def run_study_file(
     progress: Optional[bool] = None,
     overwrite: bool = False,
     threads: Optional[int] = None,
+    max_points: Optional[int] = None,
+    max_steps: Optional[int] = None,
 ) -> str:
     """Run the study of a TOML file into ``out`` (``threads``: per chunk,
-    on this machine); returns the report line. A ``ConfigError`` about the
-    file names it, the line and the key."""
+    on this machine; ``max_points``, ``max_steps``: in place of the file's
+    caps on the grid's size); prints the study and its size first, returns
+    the report line. A ``ConfigError`` about the file names it, the line
+    and the key."""
     with located_config_errors(path):
-        study = load_study(path)
+        study = load_study(path, max_points=max_points, max_steps=max_steps)
+    print(f"thermobear study: {study.summary()} into {out}", flush=True)
     try:
         study.run(
             out,

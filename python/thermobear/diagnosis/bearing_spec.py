@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
 
 import numpy as np
 
+from .._validate import did_you_mean
 from ..errors import ConfigError, ThermobearError
 from ..thermal.oil_supply import SUPPLY_WITHOUT_KEYWORDS
 from .candidates import Candidate, _candidate_list, load_level_candidates
@@ -15,7 +16,7 @@ from .measurements import QUANTITIES
 from .protocol import ModelSpec, register_kind
 from .registry import _THERMAL_DEFAULTS, LOAD_SCALE_OPTIONS, supply_given
 from .relative import with_changes
-from .unknown_heat import UNKNOWN_HEAT_OPTIONS, has_unknown_heat, unknown_heat_w
+from .unknown_heat import UNKNOWN_HEAT_OPTIONS, has_unknown_heat
 
 if TYPE_CHECKING:
     import polars
@@ -105,12 +106,14 @@ class BearingModelSpec(ModelSpec):
 
     def thermal_options(self) -> dict:
         """The options as [`thermobear.thermal_state`][thermobear.thermal_state] keywords (the
-        load scales removed, unset SKF inputs left to their defaults)."""
+        load scales removed, unset SKF inputs left to their defaults; the
+        unknown heat law only when it is not zero)."""
+        law = has_unknown_heat(self.options)
         return {
             k: v
             for k, v in self.options.items()
             if k not in LOAD_SCALE_OPTIONS
-            and k not in UNKNOWN_HEAT_OPTIONS
+            and (law or k not in UNKNOWN_HEAT_OPTIONS)
             and "@" not in k
             and v is not None
         }
@@ -163,25 +166,14 @@ class BearingModelSpec(ModelSpec):
         return tuple(self.options.get(k) for k in UNKNOWN_HEAT_OPTIONS)
 
     def _curve(self, speeds: np.ndarray, fa: float, fr: float, topts: dict) -> polars.DataFrame:
-        """The thermal stiffness curve at ``speeds``; with an unknown heat
-        source of its own speed law (``unknown_heat_w``) each speed is
-        solved with its own extra heat."""
-        import polars as pl
-
+        """The thermal stiffness curve at ``speeds`` (with an unknown heat
+        law in ``topts``, each speed with its own extra heat: the thermal
+        entry points take the law)."""
         from ..thermal import thermal_stiffness_curve
 
-        eff = list(self.effects)
-        if not has_unknown_heat(self.options):
-            return thermal_stiffness_curve(self.bearing, speeds, fa, fr, effects=eff, **topts)
-        extra = float(topts.get("extra_heat_w", 0.0)) + unknown_heat_w(self.options, speeds)
-        rest = {k: v for k, v in topts.items() if k != "extra_heat_w"}
-        frames = [
-            thermal_stiffness_curve(
-                self.bearing, [n], fa, fr, effects=eff, extra_heat_w=float(h), **rest
-            )
-            for n, h in zip(speeds.tolist(), extra.tolist(), strict=True)
-        ]
-        return pl.concat(frames)
+        return thermal_stiffness_curve(
+            self.bearing, speeds, fa, fr, effects=list(self.effects), **topts
+        )
 
     def candidate_list(self, quantities: Sequence[str] = ()) -> list[Candidate]:
         """The candidates against this baseline, with a sensor-offset decoy
@@ -202,7 +194,10 @@ def _check_option_names(options: dict) -> None:
             continue
         if len(level) == 2 and level[0] in LOAD_SCALE_OPTIONS:
             continue
-        raise ConfigError(f"invalid option = {k!r}: known: {', '.join(sorted(_THERMAL_DEFAULTS))}")
+        raise ConfigError(
+            f"invalid option = {k!r}: known: {', '.join(sorted(_THERMAL_DEFAULTS))}"
+            + did_you_mean(k, [*_THERMAL_DEFAULTS, *UNKNOWN_HEAT_OPTIONS])
+        )
 
 
 def _check_supply(options: dict) -> None:

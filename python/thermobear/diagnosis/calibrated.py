@@ -26,6 +26,7 @@ import numpy as np
 
 from ..errors import ConfigError
 from .candidates import Candidate
+from .model_file import FILE_FORMAT, FILE_VERSION  # the saved form's format and version
 from .protocol import ModelSpec
 from .setting import _Setting
 
@@ -33,10 +34,6 @@ if TYPE_CHECKING:
     import polars
 
 ModelKind = Literal["calibration", "named", "tie", "unresolved", "nothing"]
-
-#: The ``format`` and ``version`` of a saved calibrated model.
-FILE_FORMAT = "thermobear-calibrated-model"
-FILE_VERSION = 1
 
 _INTERVAL_COLUMNS = ("name", "value", "lower_95", "upper_95", "std", "lower", "upper")
 
@@ -186,22 +183,31 @@ class CalibratedModel:
     @classmethod
     def from_json(cls, text: str) -> CalibratedModel:
         """The model of a saved form's JSON text (see
-        [`to_json`][thermobear.CalibratedModel.to_json])."""
+        [`to_json`][thermobear.CalibratedModel.to_json]), every field
+        checked first (``thermobear.diagnosis.model_file``): a
+        [`ConfigError`][thermobear.ConfigError] names the first bad one."""
+        from .model_file import check_file, parse
+
+        d = parse(text)
+        check_file(d)
         try:
-            d = json.loads(text)
-        except ValueError as e:
-            raise ConfigError(f"invalid calibrated model = not JSON: {e}") from None
-        if not isinstance(d, dict) or d.get("format") != FILE_FORMAT:
-            fmt = d.get("format") if isinstance(d, dict) else d
-            raise ConfigError(f"invalid format = {fmt!r}: not a {FILE_FORMAT} file")
-        if d.get("version") != FILE_VERSION:
-            raise ConfigError(f"invalid version = {d.get('version')!r}: supported {FILE_VERSION}")
-        return _from_dict(d)
+            return _from_dict(d)
+        except (ValueError, TypeError, KeyError, OverflowError) as e:  # past the checks
+            raise ConfigError(f"invalid calibrated model = its fields do not fit: {e}") from None
 
     @classmethod
     def load(cls, path: Union[str, Path]) -> CalibratedModel:
-        """Read a model written by [`save`][thermobear.CalibratedModel.save]."""
-        return cls.from_json(Path(path).read_text())
+        """Read a model written by [`save`][thermobear.CalibratedModel.save],
+        every field checked first: a missing, unreadable or damaged file
+        raises a [`ConfigError`][thermobear.ConfigError] naming the path
+        and the field."""
+        from .model_file import read_text
+
+        source = read_text(path)
+        try:
+            return cls.from_json(source)
+        except ConfigError as e:
+            raise ConfigError(f"{e} (in {str(path)!r})") from None
 
     def summary(self) -> str:
         """The model in a few lines: kind and label, each calibrated value
@@ -388,27 +394,36 @@ def _to_dict(m: CalibratedModel) -> dict:
     }
 
 
-def _base_from(d: dict) -> ModelSpec:
+def _base_from(d: dict, where: str = "") -> ModelSpec:
     from .. import _native
+    from .model_file import check_machine
     from .protocol import MODEL_KINDS
 
     if d["machine"] not in MODEL_KINDS:
         raise ConfigError(f"invalid machine = {d['machine']!r}: known: {', '.join(MODEL_KINDS)}")
     model_class, spec_class, _ = MODEL_KINDS[d["machine"]]
-    native = _native._restore(d["state"])
+    try:
+        native = _native._restore(d["state"])
+    except ConfigError as e:
+        raise ConfigError(f"invalid {where}base.state: {e}") from None
+    check_machine(d["machine"], native, where)
     build: Any = spec_class  # a registered spec: (machine, effects=..., **options)
-    return build(model_class(native), effects=d["effects"], **d["options"])
+    try:
+        return build(model_class(native), effects=d["effects"], **d["options"])
+    except ConfigError as e:
+        raise ConfigError(f"invalid {where}base.effects or base.options: {e}") from None
 
 
-def _from_dict(d: dict) -> CalibratedModel:
+def _from_dict(d: dict, where: str = "") -> CalibratedModel:
     steps = []
     for s in d["steps"]:
         c = s["candidate"]
         cand = None if c is None else Candidate(**{**c, "affects": tuple(c["affects"])})
         steps.append(_Step(s["name"], cand, s["fixed"]))
     m = CalibratedModel(
-        d["kind"], d["label"], _base_from(d["base"]), steps, d["values"], d["covariance"],
-        [tuple(b) for b in d["profile"]], [_from_dict(x) for x in d["members"]],
+        d["kind"], d["label"], _base_from(d["base"], where), steps, d["values"], d["covariance"],
+        [tuple(b) for b in d["profile"]],
+        [_from_dict(x, f"{where}members[{i}].") for i, x in enumerate(d["members"])],
         d["provenance"], d["discrepancy"],
     )  # fmt: skip
     w = d.get("weight")

@@ -315,6 +315,7 @@ def _checked_options(o: dict) -> dict:
     if unknown:
         raise ConfigError(
             f"invalid option = {unknown[0]!r}: a gear model's options are {', '.join(_DEFAULTS)}"
+            + val.did_you_mean(unknown[0], _DEFAULTS)
         )
     for name in GEAR_PARAMETERS:
         o[name] = val.real(name, o[name], 0.0, open_lo=name != "te_amplitude_um")

@@ -52,7 +52,8 @@ def suggest_measurement(model, st, ca, cb, fa, fb, df, base_options, envelope=No
     """Quantity, speed and axial load where two look-alike fingerprints (b
     scaled to match a on the measured rows) differ most, over all supported
     quantities inside the operating envelope (``envelope_grid``), in
-    units of the typical uncertainty: (quantity, speed_rpm, axial_n)."""
+    units of the typical uncertainty: (quantity, speed_rpm, axial_n); three
+    Nones when no quantity separates them (a failed prediction)."""
     from ..errors import ThermobearError
 
     cond = envelope_grid(df, envelope)
@@ -60,9 +61,10 @@ def suggest_measurement(model, st, ca, cb, fa, fb, df, base_options, envelope=No
         ra = _response(model, st, ca, cond, base_options)
         rb = _response(model, st, cb, cond, base_options)
     except ThermobearError:
-        return "", float("nan"), float("nan")
+        return None, None, None
     scale = float(fa @ fb / (fb @ fb)) if fb @ fb > 0 else 0.0
-    best, where = -1.0, ("", float("nan"), float("nan"))
+    best = -1.0
+    where: tuple[str | None, float | None, float | None] = (None, None, None)
     table = model.quantities
     every = _predict_all(model, st, cond)
     for q in table:
@@ -84,7 +86,8 @@ def identifiability(
     table (``a``, ``b``, ``cosine``) and the look-alike pairs (|cos| >
     ``lookalike_cosine``) with the quantity and speed that separate them
     best inside the operating envelope (``suggest_measurement``, when
-    ``suggest``)."""
+    ``suggest``; null ``suggest_*`` columns when not asked for or none
+    separates them)."""
     import polars as pl
 
     fp = {n: cu.slope() / data.s for n, cu in curves.items()}
@@ -95,7 +98,7 @@ def identifiability(
             cs = _cosine(fp[a], fp[b])
             pairs.append((a, b, cs))
             if abs(cs) > lookalike_cosine:
-                where = ("", float("nan"), float("nan"))
+                where: tuple = (None, None, None)
                 if suggest:
                     ca, cb = curves[a].cand, curves[b].cand
                     where = suggest_measurement(

@@ -26,12 +26,13 @@ import numpy as np
 
 from .. import _validate as val
 from ..errors import ConfigError, ThermobearError
+from ..plausibility import warn
 from .calibrated import calibration_models
 from .calibration import Calibration
 from .measurements import prepare_measurements
 from .protocol import as_spec
 from .setting import _predict, _Setting
-from .statistics import fisher_identifiability
+from .statistics import COND_MAX, fisher_identifiability
 
 #: Most distinct candidates calibrated together.
 MAX_JOINT = 3
@@ -218,6 +219,26 @@ def _profile(prob: _Fittable, theta, chi_min, j, thr, halfwidth=None) -> tuple[f
     return edges[0], edges[1]
 
 
+def _enough_points(names: list[str], n: int, p: int) -> None:
+    """Refuse a fit of ``p`` values from fewer than ``p`` measured points."""
+    if n < p:
+        raise ConfigError(
+            f"invalid parameters = {names!r}: {p} value(s) to calibrate from {n} measured "
+            "point(s); a fit needs at least as many points as values (measure more, or "
+            "calibrate fewer)"
+        )
+
+
+def _warn_ill_conditioned(names: list[str], cond: float) -> None:
+    """Warn when the Fisher information's condition number passes ``COND_MAX``."""
+    if not cond <= COND_MAX:
+        warn(
+            f"parameters = {names!r}: the fit is ill-conditioned (condition number {cond:.3g} "
+            f"of the Fisher information, past {COND_MAX:g}): these data cannot pin every "
+            "value; see the calibration's not_identified"
+        )
+
+
 def calibrate(
     datasets,
     parameters: Sequence[str],
@@ -273,12 +294,14 @@ def calibrate(
     data = [prepare_measurements(m, spec.quantities, None) for _, spec, m in sets]
     names = val.names("parameters", parameters, one=True)
     slots = _slots(sets, data, names, val.names("per_set", per_set, one=True))
+    n, p = sum(d.n for d in data), len(slots)
+    _enough_points(names, n, p)
     prob = _Problem(sets, data, slots)
     chi_before = prob.chi2(prob.null)
     theta, chi_min, jac = _best_fit(prob)
-    n, p = sum(d.n for d in data), len(slots)
     phi = max(1.0, chi_min / max(n - p, 1))
     cond, weak = fisher_identifiability(jac, prob.hi - prob.lo)
+    _warn_ill_conditioned(names, cond)
     intervals = [_profile(prob, theta, chi_min, j, _CHI2_95 * phi) for j in range(p)]
     for j, (a, b) in enumerate(intervals):
         if a <= prob.lo[j] and b >= prob.hi[j]:

@@ -664,7 +664,8 @@ def holdout_mask(
         if len(us) < 3:
             raise DataError(
                 f"invalid measurements: {len(us)} distinct speeds; holding out the highest "
-                "speeds needs at least 3"
+                "speeds needs at least 3 (holdout=None, --holdout none on the command line, "
+                "diagnoses without the extrapolation check)"
             )
         k = min(max(1, int(round(frac * len(us)))), len(us) - 2)
         return speed >= us[-k]

@@ -18,7 +18,9 @@ class Diagnosis:
     quantity's residual ``shape``; ``fingerprints``: pairwise cosine
     similarity of the candidates' fingerprints; ``lookalikes``: pairs with
     |cos| > 0.95 and the extra measurement (quantity, speed) that separates
-    them best; ``screening``: one table per round (candidate, calibrated
+    them best (``suggest_quantity``, ``suggest_speed_rpm``,
+    ``suggest_axial_n``: null when no suggestion was asked for or none
+    separates them); ``screening``: one table per round (candidate, calibrated
     value, 95 % interval, delta_bic, held-out chi^2, passes); ``accepted``:
     the accepted candidates with value and interval; ``tie``: names of a
     tie set; ``verdict``: text; ``gap``: rms residual/sigma on every
@@ -103,9 +105,13 @@ class Diagnosis:
             if not verbose and not {row["a"], row["b"]} & named:
                 others += 1
                 continue
+            where = (
+                "no separating measurement found"
+                if row["suggest_speed_rpm"] is None
+                else f"measure {row['suggest_quantity']} at {row['suggest_speed_rpm']:.0f} rpm"
+            )
             lines.append(
-                f"  look-alikes {row['a']} ~ {row['b']} (cos {row['cosine']:.3f}): measure "
-                f"{row['suggest_quantity']} at {row['suggest_speed_rpm']:.0f} rpm"
+                f"  look-alikes {row['a']} ~ {row['b']} (cos {row['cosine']:.3f}): {where}"
             )
         lines += gap_lines(self.gap, verbose)
         if verbose:

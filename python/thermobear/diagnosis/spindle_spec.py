@@ -36,6 +36,7 @@ from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
 
 import numpy as np
 
+from .._validate import did_you_mean
 from ..errors import ConfigError, ThermobearError
 from ..spindle.spindle import Spindle, _state_row
 from ..thermal.oil_supply import SUPPLY_OPTIONS
@@ -622,7 +623,9 @@ def _check_option_names(options: dict) -> None:
     for k in options:
         if k in _OPTIONS or k.split("@", 1)[0] == "preload_scale" and "@" in k:
             continue
-        raise ConfigError(f"invalid option = {k!r}: known: {', '.join(_OPTIONS)}")
+        raise ConfigError(
+            f"invalid option = {k!r}: known: {', '.join(_OPTIONS)}" + did_you_mean(k, _OPTIONS)
+        )
 
 
 def _check_options(o: dict) -> None:

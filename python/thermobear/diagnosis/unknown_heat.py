@@ -25,15 +25,13 @@ from typing import Any, Sequence
 
 import numpy as np
 
+from ..thermal.heat_law import HEAT_LAW_OPTIONS, has_heat_law, heat_law_w
 from .candidates import Candidate
 
 #: The options of the unknown heat source's speed law (see the module
-#: docstring): linear and quadratic coefficients [W], reference speed [rpm].
-UNKNOWN_HEAT_OPTIONS = (
-    "unknown_heat_linear_w",
-    "unknown_heat_quadratic_w",
-    "unknown_heat_reference_rpm",
-)
+#: docstring): linear and quadratic coefficients [W], reference speed [rpm];
+#: the thermal entry points take them as keywords (``thermobear.thermal.heat_law``).
+UNKNOWN_HEAT_OPTIONS = HEAT_LAW_OPTIONS
 
 #: Bounds of each coefficient [W]: twice the range of the registry's
 #: constant extra heat (0-100 W) either way; the clipped law then spans
@@ -45,19 +43,9 @@ COEFFICIENT_BOUNDS = (-200.0, 200.0)
 MAX_REFERENCE_RPM = 1e6
 
 
-def has_unknown_heat(options: dict) -> bool:
-    """Whether ``options`` hold a non-zero unknown heat law."""
-    return any(float(options.get(k) or 0.0) != 0.0 for k in UNKNOWN_HEAT_OPTIONS[:2])
-
-
-def unknown_heat_w(options: dict, speeds_rpm: Any) -> np.ndarray:
-    """The unknown heat [W] of the law in ``options`` at ``speeds_rpm``."""
-    n = np.asarray(speeds_rpm, dtype=float)
-    a = float(options.get("unknown_heat_linear_w") or 0.0)
-    b = float(options.get("unknown_heat_quadratic_w") or 0.0)
-    ref = float(options.get("unknown_heat_reference_rpm") or 0.0)
-    x = n / ref if ref > 0.0 else np.zeros_like(n)
-    return np.clip(a * x + b * x * x, 0.0, None)
+#: Whether options hold a non-zero law; the law's heat [W] at given speeds.
+has_unknown_heat = has_heat_law
+unknown_heat_w = heat_law_w
 
 
 def supports_unknown_heat(spec: Any) -> bool:

@@ -4,6 +4,7 @@ torque and speed, and the largest Lyapunov exponent."""
 
 from __future__ import annotations
 
+import logging
 from typing import TYPE_CHECKING, Any, Callable, Mapping, Optional, Sequence, Union
 
 import numpy as np
@@ -80,13 +81,89 @@ def _count(name: str, value: Any, minimum: int) -> int:
     return val.whole(name, value, minimum)
 
 
+#: The most RK4 steps per mesh period a sweep or Lyapunov run takes (the
+#: native sweeps refuse more too). The step rule needs about 270,000 / rpm
+#: steps for the seed pair, so this covers speeds down to a few rpm; past
+#: the need, RK4's error falls as the fourth power of the step and more
+#: steps only add time.
+MAX_STEPS_PER_PERIOD = 100_000
+
+#: The most mesh periods in any one count of a sweep or Lyapunov run
+#: (``transient_periods``, ``record_periods``, ``lyapunov_periods``,
+#: ``periods``, ``max_transient_periods``, ``lyapunov_max_periods``). The
+#: default classifier settles within 1,500 periods and decides a Lyapunov
+#: exponent within 400; each recorded period is a row of the result.
+MAX_PERIODS = 100_000
+
+#: The most RK4 steps one call may plan, all cells together (``max_steps=``
+#: raises it): cells x (transient + record + Lyapunov periods) x
+#: steps_per_period. A step of the gear model takes about 80 ns on one
+#: core (up to 140 ns on a busy machine; 20 to 30 ns a lane in the
+#: lock-step batches), so 2e9 steps are a few minutes at most on one core.
+MAX_STEPS = 2_000_000_000
+
+_log = logging.getLogger("thermobear.gear")
+
+
+def _bounded(name: str, value: Any, minimum: int, maximum: int, unit: str) -> int:
+    """``value`` as a whole number in [minimum, maximum] (the bound named
+    with its unit, a ConfigError past it)."""
+    n = val.whole(name, value, minimum, None)
+    if n > maximum:
+        raise _config_error(
+            f"invalid {name} = {value!r}: must be at most {maximum:,} {unit} (the bound of the "
+            "gear dynamics; see the Limits page)"
+        )
+    return n
+
+
 def _counts(transient: Any, record: Any, steps: Any, lyapunov: Any) -> tuple[int, int, int, int]:
     return (
-        _count("transient_periods", transient, 0),
-        _count("record_periods", record, 2),
-        _count("steps_per_period", steps, 1),
-        _count("lyapunov_periods", lyapunov, 0),
+        _bounded("transient_periods", transient, 0, MAX_PERIODS, "mesh periods"),
+        _bounded("record_periods", record, 2, MAX_PERIODS, "mesh periods"),
+        _bounded("steps_per_period", steps, 1, MAX_STEPS_PER_PERIOD, "steps per mesh period"),
+        _bounded("lyapunov_periods", lyapunov, 0, MAX_PERIODS, "mesh periods"),
     )
+
+
+def planned_steps(
+    cells: int, transient_periods: int, record_periods: int, lyapunov_periods: int,
+    steps_per_period: int,
+) -> int:  # fmt: skip
+    """The RK4 steps a sweep plans: ``cells x (transient_periods +
+    record_periods + lyapunov_periods) x steps_per_period`` (the adaptive
+    transient and the Lyapunov extension may add to it; a periodic cell
+    skips its Lyapunov periods)."""
+    return cells * (transient_periods + record_periods + lyapunov_periods) * steps_per_period
+
+
+def _check_work(
+    call: str,
+    cells: str,
+    n_cells: int,
+    counts: tuple[int, int, int, int],
+    max_steps: Any,
+    names: tuple[str, str, str] = ("transient_periods", "record_periods", "lyapunov_periods"),
+) -> int:
+    """State (log, ``thermobear.gear`` at INFO) and check the work of a
+    call before it starts: ConfigError naming the arguments and the total
+    when it plans more than ``max_steps`` RK4 steps (None: ``MAX_STEPS``).
+    ``counts``: transient, record, steps per period, Lyapunov periods."""
+    transient, record, steps, lyapunov = counts
+    cap = MAX_STEPS if max_steps is None else val.whole("max_steps", max_steps, 1, None)
+    total = planned_steps(n_cells, transient, record, lyapunov, steps)
+    periods = " + ".join(
+        f"{n} {name}" for n, name in zip(counts[:2] + counts[3:], names, strict=True) if name
+    )
+    work = f"{cells} x ({periods}) x {steps:,} steps_per_period = {total:,} RK4 steps"
+    if total > cap:
+        raise _config_error(
+            f"invalid {call} work = {work}: more than max_steps = {cap:,} (the default, "
+            f"{MAX_STEPS:,}, is a few minutes on one core); use fewer cells, periods or "
+            "steps, or pass max_steps= to raise the cap"
+        )
+    _log.info("%s: %s (max_steps = %s)", call, work, f"{cap:,}")
+    return total
 
 
 def _settings(given: Mapping[str, Any]) -> dict[str, Any]:
@@ -125,10 +202,19 @@ def sweep_steps(systems: Sequence[GearSystem], speeds: Any, steps_per_period: An
     naming them and the number needed, before any speed is run."""
     import re
 
+    from .._input_checks import check_gear_speed
     from ..errors import ConfigError
 
+    for sys in systems:  # the fastest speed of the sweep
+        check_gear_speed(sys.gear.geometry, float(np.max(np.asarray(speeds, dtype=float))))
     given = steps_per_period is not None
-    steps = _count("steps_per_period", steps_per_period, 1) if given else DEFAULT_STEPS_PER_PERIOD
+    steps = (
+        _bounded(
+            "steps_per_period", steps_per_period, 1, MAX_STEPS_PER_PERIOD, "steps per mesh period"
+        )
+        if given
+        else DEFAULT_STEPS_PER_PERIOD
+    )
     need, short = steps, []
     for sys in systems:
         for v in np.asarray(speeds, dtype=float):
@@ -149,6 +235,12 @@ def sweep_steps(systems: Sequence[GearSystem], speeds: Any, steps_per_period: An
             f"{len(speeds) * len(systems)} speeds ({min(short):g}-{max(short):g} rpm: the step "
             f"must stay within 0.1 x the shortest natural period); use at least {need}, or "
             "leave steps_per_period=None to have it chosen"
+        )
+    if need > MAX_STEPS_PER_PERIOD:
+        raise _config_error(
+            f"invalid speeds_rpm = {min(short):g} rpm (the slowest): it needs {need:,} "
+            f"steps_per_period, more than the bound of {MAX_STEPS_PER_PERIOD:,} (the mesh period "
+            "is too long against the shortest natural period); sweep faster speeds"
         )
     return need
 
@@ -235,6 +327,7 @@ def bifurcation(
     *,
     lyapunov_periods: int = 100,
     progress: Progress = None,
+    max_steps: Optional[int] = None,
     max_transient_periods: Optional[int] = None,
     max_period: Optional[int] = None,
     period_rel_tol: Optional[float] = None,
@@ -281,21 +374,21 @@ def bifurcation(
     jump step relative to the local median step (5), taken over ``jump_window_speeds`` [speeds]
     neighbouring steps on each side (5). Bad values raise ConfigError naming the setting.
     ``steps_per_period`` (RK4 steps per mesh period; None: 64, or more when a swept speed needs
-    more) is checked at every speed before the sweep starts (``sweep_steps``). GIL released; Ctrl-C
-    interrupts; ``progress(done, total)``."""
+    more) is checked at every speed before the sweep starts (``sweep_steps``).
+
+    Bounded work (``planned_steps``, ``MAX_STEPS_PER_PERIOD``, ``MAX_PERIODS``): the planned
+    RK4 steps are logged (``thermobear.gear``, INFO) and refused past ``max_steps`` (None:
+    ``MAX_STEPS``, 2e9) with a ConfigError naming the arguments and the total. GIL released;
+    Ctrl-C interrupts, also inside one long speed; ``progress(done, total)``."""
     system = _check_system(system)
     speeds = _speeds(speeds_rpm)
+    counts = _counts(transient_periods, record_periods, steps_per_period or 1, lyapunov_periods)
     steps = sweep_steps([system], speeds, steps_per_period)
+    counts = counts[:2] + (steps,) + counts[3:]
+    _check_work("bifurcation", f"{len(speeds)} speeds", len(speeds), counts, max_steps)
     settings = _settings(locals())
     try:
-        cols = _native.bifurcation(
-            system._s,
-            speeds,
-            direction,
-            *_counts(transient_periods, record_periods, steps, lyapunov_periods),
-            progress,
-            settings,
-        )
+        cols = _native.bifurcation(system._s, speeds, direction, *counts, progress, settings)
     except BaseException as e:
         _sweep_partial(e, [(direction, None)])
         raise
@@ -312,6 +405,7 @@ def bifurcation_set(
     *,
     lyapunov_periods: int = 100,
     progress: Progress = None,
+    max_steps: Optional[int] = None,
     max_transient_periods: Optional[int] = None,
     max_period: Optional[int] = None,
     period_rel_tol: Optional[float] = None,
@@ -327,7 +421,8 @@ def bifurcation_set(
 ) -> polars.DataFrame:
     """Every (case, direction) sweep over the same speeds in parallel
     (lock-step batches); the [`bifurcation`][thermobear.bifurcation] columns (each sweep in its
-    sweep order) plus ``case``. Settings as in [`bifurcation`][thermobear.bifurcation]."""
+    sweep order) plus ``case``. Settings, bounds and ``max_steps`` (cells: systems x directions x
+    speeds) as in [`bifurcation`][thermobear.bifurcation]."""
     import polars as pl
 
     if not systems:
@@ -335,14 +430,18 @@ def bifurcation_set(
     systems = {name: _check_system(sys) for name, sys in systems.items()}
     jobs = [(name, sys, d) for name, sys in systems.items() for d in directions]
     speeds = _speeds(speeds_rpm)
+    counts = _counts(transient_periods, record_periods, steps_per_period or 1, lyapunov_periods)
     steps = sweep_steps(list(systems.values()), speeds, steps_per_period)
+    counts = counts[:2] + (steps,) + counts[3:]
+    cells = f"{len(systems)} systems x {len(directions)} directions x {len(speeds)} speeds"
+    _check_work("bifurcation_set", cells, len(jobs) * len(speeds), counts, max_steps)
     settings = _settings(locals())
     try:
         res = _native.bifurcation_many(
             [j[1]._s for j in jobs],
             [j[2] for j in jobs],
             speeds,
-            *_counts(transient_periods, record_periods, steps, lyapunov_periods),
+            *counts,
             progress,
             settings,
         )
@@ -505,6 +604,7 @@ def regime_map(
     *,
     lyapunov_periods: int = 100,
     progress: Progress = None,
+    max_steps: Optional[int] = None,
     max_transient_periods: Optional[int] = None,
     max_period: Optional[int] = None,
     period_rel_tol: Optional[float] = None,
@@ -525,13 +625,18 @@ def regime_map(
     ``mean_dte_um``, ``lyapunov_per_mesh_period``, ``lyapunov_per_s`` and
     their ``lyapunov_stderr_*``, ``zero_one_k``, ``transient_periods``,
     ``settled``. The bearing stiffness schedule stays the system's. Settings
-    as in [`bifurcation`][thermobear.bifurcation] (the jump settings are not used here)."""
+    as in [`bifurcation`][thermobear.bifurcation] (the jump settings are not used here), and so
+    are the bounds, ``max_steps`` (cells: torques x TE scales x speeds) and Ctrl-C."""
 
     system = _check_system(system)
     torques = val.reals("torques_n_m", torques_n_m).tolist()
     scales = val.reals("te_scales", te_scales).tolist()
     speeds = _speeds(speeds_rpm)
+    counts = _counts(transient_periods, record_periods, steps_per_period or 1, lyapunov_periods)
     steps = sweep_steps([system], speeds, steps_per_period)
+    counts = counts[:2] + (steps,) + counts[3:]
+    cells = f"{len(torques)} torques x {len(scales)} te_scales x {len(speeds)} speeds"
+    _check_work("regime_map", cells, len(torques) * len(scales) * len(speeds), counts, max_steps)
     settings = _settings(locals())
     try:
         cols = _native.regime_map(
@@ -539,7 +644,7 @@ def regime_map(
             torques,
             scales,
             speeds,
-            *_counts(transient_periods, record_periods, steps, lyapunov_periods),
+            *counts,
             progress,
             settings,
         )
@@ -614,6 +719,7 @@ def largest_lyapunov(
     block_periods: int = 10,
     per: LyapunovPer = "s",
     return_stderr: bool = False,
+    max_steps: Optional[int] = None,
 ) -> Union[float, tuple[float, float]]:
     """Largest Lyapunov exponent.
 
@@ -630,7 +736,12 @@ def largest_lyapunov(
     (= 1/s divided by the mesh frequency, the unit of the sweeps'
     ``lyapunov_per_mesh_period``). ``return_stderr=True`` returns
     ``(exponent, standard error)`` in that unit (batch means over the
-    blocks)."""
+    blocks). Bounds as in [`bifurcation`][thermobear.bifurcation]:
+    ``steps_per_period`` <= 100,000, ``periods`` and ``transient_periods``
+    <= 100,000, and (``transient_periods`` + ``periods``) x
+    ``steps_per_period`` <= ``max_steps`` (None: ``MAX_STEPS``). GIL
+    released; Ctrl-C interrupts (KeyboardInterrupt) within a fraction of a
+    second."""
     if isinstance(system_or_name, str):
         if per != "s" or return_stderr:
             raise _config_error(
@@ -645,13 +756,19 @@ def largest_lyapunov(
         raise _config_error("invalid speed_rpm = None: a gear system needs a speed")
     if per not in ("s", "mesh_period"):
         raise _config_error(f"invalid per = {per!r}: must be 's' or 'mesh_period'")
+    n_periods = _bounded("periods", periods, 2, MAX_PERIODS, "mesh periods")
+    n_transient = _bounded("transient_periods", transient_periods, 0, MAX_PERIODS, "mesh periods")
+    n_steps = _bounded(
+        "steps_per_period", steps_per_period, 1, MAX_STEPS_PER_PERIOD, "steps per mesh period"
+    )
+    blocks = _bounded("block_periods", block_periods, 1, MAX_PERIODS, "mesh periods")
+    speed = val.real("speed_rpm", speed_rpm, 0.0, open_lo=True)
+    _check_work(
+        "largest_lyapunov", "1 speed", 1, (n_transient, 0, n_steps, n_periods), max_steps,
+        names=("transient_periods", "", "periods"),
+    )  # fmt: skip
     d = _native.largest_lyapunov_gear(
-        system_or_name._s,
-        val.real("speed_rpm", speed_rpm, 0.0, open_lo=True),
-        _count("periods", periods, 2),
-        _count("transient_periods", transient_periods, 0),
-        _count("steps_per_period", steps_per_period, 1),
-        _count("block_periods", block_periods, 1),
+        system_or_name._s, speed, n_periods, n_transient, n_steps, blocks
     )
     unit = "per_s" if per == "s" else "per_mesh_period"
     value = float(d[f"lyapunov_{unit}"])

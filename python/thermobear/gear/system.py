@@ -12,6 +12,7 @@ from numpy.typing import ArrayLike
 from .. import _native
 from .. import _validate as val
 from .._deprecation import renamed_kwargs
+from .._input_checks import check_gear_system
 from .._types import BearingStiffnessPer, MeshDamping, StiffnessMode
 from .pair import STIFFNESS_SPEEDS_RPM, GearPair, _config_error
 from .tables import (
@@ -153,6 +154,7 @@ class GearSystem:
             mesh_stiffness_n_per_m=self._stiffness_table(gear, mesh_stiffness_n_per_m, points),
             transmission_error_m=self._te_table(gear, transmission_error_um, points),
         )  # fmt: skip
+        check_gear_system(gear.geometry, self.params)
 
     @staticmethod
     def _stiffness_table(gear: GearPair, given: Any, points: int) -> Optional[list[float]]:

@@ -178,11 +178,13 @@ def backlash_half_um(
     ``default_half_um``). ``backlash_um`` is the deprecated name of the
     total clearance 2b."""
     if backlash_um is not None:
+        from .._limits import _outside_stacklevel
+
         warnings.warn(
             "backlash_um is deprecated: it is the total clearance 2b; use backlash_total_um "
             "(or half_backlash_um for b)",
             DeprecationWarning,
-            stacklevel=3,
+            stacklevel=_outside_stacklevel(),
         )
     given = {
         k: v

@@ -107,6 +107,8 @@ def condition_frame(spec: Any, conditions: Any, default: Any = None) -> polars.D
     if isinstance(conditions, Mapping):
         df = _grid(cols, conditions)
     elif isinstance(conditions, pl.DataFrame):
+        if conditions is not default:  # the user's frame: no column it would ignore
+            _validate.keys_known("conditions column", conditions.columns, _frame_columns(cols))
         df = _frame(cols, conditions)
     else:
         raise ConfigError(
@@ -126,6 +128,13 @@ def condition_frame(spec: Any, conditions: Any, default: Any = None) -> polars.D
             bad = v[~np.isfinite(v) | (v < 0.0)][0]
             raise ConfigError(f"invalid conditions {c} = {bad}: finite and >= 0")
     return df.unique(maintain_order=True)
+
+
+def _frame_columns(cols: Sequence[str]) -> tuple[str, ...]:
+    """The columns a conditions frame may hold: the operating columns (a
+    bearing's ``axial_n`` and a spindle's ``preload_n`` standing for each
+    other) and ``comparison``."""
+    return (*grid_keys(cols)[1:-1], *cols[:1], "comparison")
 
 
 def _frame(cols: Sequence[str], df: polars.DataFrame) -> polars.DataFrame:

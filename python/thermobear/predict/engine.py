@@ -306,7 +306,10 @@ def band_study(
     fixed = {"model": model, "what": _what_of(model.spec, quantities), "samples": samples,
              "seed": seed}  # fmt: skip
     per_sample = int(np.prod([len(v) for k, v in dims.items() if k != "sample"]))
-    return Study("prediction", dims, fixed, chunk_size=per_sample)
+    # the study is the prediction's own (its size is the samples asked for):
+    # no grid cap of the Study's, which a predict caller could not raise
+    size = per_sample * (samples + 1)
+    return Study("prediction", dims, fixed, chunk_size=per_sample, max_points=max(size, 1))
 
 
 def _raise_row(kind: Optional[str], message: Optional[str]) -> None:
@@ -378,7 +381,8 @@ def study_labels(
              "gear_options": gear_options, "sweep_options": sweep_options,
              "direction": direction, "speeds_rpm": order}  # fmt: skip
     dims = {"sample": list(sample_ids), "speed_rpm": order.tolist()}
-    study = Study("regime_prediction", dims, fixed, chunk_size=len(order))
+    size = max(len(dims["sample"]) * len(order), 1)  # the prediction's own: no grid cap
+    study = Study("regime_prediction", dims, fixed, chunk_size=len(order), max_points=size)
     df = study.run(engine=None if engine == "local" else engine, progress=False)
     out: list[Any] = []
     for (_,), rows in df.group_by(["sample"], maintain_order=True):

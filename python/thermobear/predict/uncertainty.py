@@ -183,11 +183,22 @@ def sampled_quantiles(
     return y0, lower, upper, y.std(axis=0, ddof=1)
 
 
+#: The band probabilities a prediction accepts (docs page "Limits"): below
+#: 0.5 a band holds less than half the outcomes and is no uncertainty band;
+#: above 0.999 its edges are the far tails, which neither the linearised
+#: (delta) band nor a sampled band of a few thousand runs resolves.
+LEVEL_RANGE = (0.5, 0.999)
+
+
 def check_level(level: float) -> float:
-    """``level`` as a float in (0, 1)."""
+    """``level`` as a float in ``LEVEL_RANGE``, [0.5, 0.999]."""
     from .. import _validate
 
+    lo, hi = LEVEL_RANGE
     lv = _validate.real("level", level, 0.0, 1.0, open_lo=True)
-    if not 0.0 < lv < 1.0:
-        raise ConfigError(f"invalid level = {level!r}: a probability in (0, 1), e.g. 0.95")
+    if not lo <= lv <= hi:
+        raise ConfigError(
+            f"invalid level = {level!r}: a probability in [{lo:g}, {hi:g}], e.g. 0.95 (a band "
+            "below 0.5 is no uncertainty band; above 0.999 its far tails are not resolved)"
+        )
     return lv

@@ -156,7 +156,9 @@ class Spindle:
             raise ConfigError(
                 f"invalid argument = {sorted(unused)[0]}: a spindle takes speed_rpm, "
                 "preload_n, radial_n, preload_kind, effects and the heat-model options"
-            )
+                + val.did_you_mean(sorted(unused)[0], ["speed_rpm", "preload_n", "radial_n",
+                                   "preload_kind", "effects", *SPINDLE_HEAT_OPTIONS])
+            )  # fmt: skip
         sp = self
         given = (preload_n, radial_n, preload_kind, effects, spin_friction_coefficient)
         if any(v is not None for v in (*given, *heat.values())):
@@ -330,7 +332,10 @@ def _heat_args(heat: dict[str, Any]) -> Optional[dict[str, Any]]:
     heat = seal_moment_option(heat)
     for k in heat:
         if k not in SPINDLE_HEAT_OPTIONS:
-            raise ConfigError(f"invalid argument = {k!r}: known: {', '.join(SPINDLE_HEAT_OPTIONS)}")
+            raise ConfigError(
+                f"invalid argument = {k!r}: known: {', '.join(SPINDLE_HEAT_OPTIONS)}"
+                + val.did_you_mean(k, SPINDLE_HEAT_OPTIONS)
+            )
     if all(v is None for v in heat.values()):
         return None
     out = {k: heat.get(k) for k in SPINDLE_HEAT_OPTIONS}

@@ -3,6 +3,7 @@
     [study]
     kind = "thermal"          # bearing, thermal, spindle, gear
     chunk_size = 200          # optional: points per chunk
+    max_points = 2000000      # optional: raise the cap on the grid's size
 
     [grid]                    # the dimensions: a list, or a range table
     bearing = ["7008C", "7008C-hybrid"]
@@ -18,15 +19,14 @@ where it is."""
 from __future__ import annotations
 
 import tomllib
-from pathlib import Path
-from typing import Any
+from typing import Any, Optional
 
 from ..errors import ConfigError
 from .study import Study
 
 #: Tables of a study file and the keys of ``[study]``.
 TABLES = ("study", "grid", "fixed")
-STUDY_KEYS = ("kind", "chunk_size")
+STUDY_KEYS = ("kind", "chunk_size", "max_points", "max_steps")
 
 
 def _table(doc: dict, name: str) -> dict:
@@ -46,8 +46,11 @@ def _check_names(study_kind: Any, table: dict, where: str) -> None:
             )
 
 
-def parse_study(text: str) -> Study:
-    """A [`Study`][thermobear.Study] from TOML text."""
+def parse_study(
+    text: str, *, max_points: Optional[int] = None, max_steps: Optional[int] = None
+) -> Study:
+    """A [`Study`][thermobear.Study] from TOML text; ``max_points`` and
+    ``max_steps``, when given, take the place of the file's caps."""
     from .kinds import kind_of
 
     try:
@@ -72,15 +75,22 @@ def parse_study(text: str) -> Study:
     grid, fixed = _table(doc, "grid"), _table(doc, "fixed")
     _check_names(kind, grid, "grid")
     _check_names(kind, fixed, "fixed")
-    return Study(kind.name, grid, fixed, chunk_size=head.get("chunk_size"))
+    caps = {
+        k: given if given is not None else head[k]
+        for k, given in (("max_points", max_points), ("max_steps", max_steps))
+        if given is not None or k in head
+    }
+    return Study(kind.name, grid, fixed, chunk_size=head.get("chunk_size"), **caps)
 
 
-def load_study(path_or_text: Any) -> Study:
-    """A [`Study`][thermobear.Study] from a TOML file (a path) or TOML text."""
+def load_study(
+    path_or_text: Any, *, max_points: Optional[int] = None, max_steps: Optional[int] = None
+) -> Study:
+    """A [`Study`][thermobear.Study] from a TOML file (a path) or TOML text
+    (``max_points``, ``max_steps``: when given, in place of the file's caps)."""
     text = str(path_or_text)
     if "\n" not in text and "=" not in text:
-        try:
-            text = Path(text).read_text()
-        except OSError as e:
-            raise ConfigError(f"invalid path = {text}: cannot read: {e}") from None
-    return parse_study(text)
+        from ..config import read_text_file
+
+        text = read_text_file(text)
+    return parse_study(text, max_points=max_points, max_steps=max_steps)

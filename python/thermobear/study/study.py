@@ -10,9 +10,10 @@ from typing import Any, Callable, Mapping, Optional
 from .. import _native
 from .._limits import cap_threads
 from .._types import StudyKind
+from .._validate import whole
 from ..errors import ConfigError, Interrupted
 from . import engine as engines
-from .grid import Grid, grid_hash
+from .grid import MAX_POINTS, MAX_STEPS, Grid, grid_hash
 from .kinds import kind_of
 from .store import FORMAT, Store
 
@@ -75,7 +76,13 @@ class Study:
 
     [`run`][thermobear.Study.run] computes it in chunks of ``chunk_size`` points and returns
     one tidy polars DataFrame: ``point``, the inputs, the outputs (units in
-    the names), ``ok``, ``error_kind``, ``error``."""
+    the names), ``ok``, ``error_kind``, ``error``.
+
+    The grid's size is counted from the specs before any value is made
+    (``repr`` states it): more than ``max_points`` points (default
+    1,000,000), or for the ``gear`` kind more than ``max_steps`` time steps
+    in all (default 10^10), is a ``ConfigError`` naming the largest
+    dimension and the size; raise the cap with the keyword."""
 
     def __init__(
         self,
@@ -84,8 +91,14 @@ class Study:
         fixed: Optional[Mapping[str, Any]] = None,
         *,
         chunk_size: Optional[int] = None,
+        max_points: int = MAX_POINTS,
+        max_steps: int = MAX_STEPS,
     ) -> None:
-        self.grid = Grid(kind_of(kind), grid, fixed)
+        self.max_points = whole("max_points", max_points, 1, None)
+        self.max_steps = whole("max_steps", max_steps, 1, None)
+        self.grid = Grid(
+            kind_of(kind), grid, fixed, max_points=self.max_points, max_steps=self.max_steps
+        )
         size = DEFAULT_CHUNK[kind] if chunk_size is None else chunk_size
         if isinstance(size, bool) or not isinstance(size, int) or size < 1:
             raise ConfigError(f"invalid chunk_size = {size!r}: must be a whole number >= 1")
@@ -141,10 +154,14 @@ class Study:
         a second run with the same grid computes only the missing chunks,
         another grid is refused unless ``overwrite``. Without ``out`` the
         chunks stay in memory. A stored chunk is reused only when its check
-        record (grid hash, index, point range, SHA-256) matches; any other
-        is recomputed with a warning naming its file. One run owns ``out``
-        at a time (an advisory lock): a second is refused with a
-        ``ConfigError`` naming the first one's process. ``overwrite=True``
+        record (grid hash, index, point range, SHA-256) matches and its
+        rows are the record's (its ``point`` column that range, its input
+        columns this grid's values there); any other is recomputed with a
+        warning naming its file. One run owns ``out`` at a time (an
+        advisory lock on the folder, held even if its lock file is
+        deleted): a second is refused with a ``ConfigError`` naming the
+        first one's process. A folder that cannot be written is a
+        ``ConfigError`` naming it. ``overwrite=True``
         starts ``out`` afresh whatever it holds (an unreadable manifest,
         stray or damaged chunks).
 
@@ -166,7 +183,7 @@ class Study:
         results with ``polars.scan_parquet(out / "chunks" / "*.parquet")``."""
         if not collect and out is None:
             raise ConfigError("invalid collect = False: without out the results would be lost")
-        store = Store(out, self.manifest(), overwrite) if out is not None else None
+        store = Store(out, self.manifest(), overwrite, self.grid.frame) if out is not None else None
         try:
             return self._run(store, engine, progress, threads, on_chunk, collect)
         finally:
@@ -250,26 +267,53 @@ class Study:
 
         # Chunks computed now are still in memory; only reused ones are read.
         frames = [
-            memory[i] if i in memory else store.read(i)  # type: ignore[union-attr]
+            memory[i] if i in memory else store.read_checked(i, *self._bounds(i))  # type: ignore[union-attr]
             for i in range(self.n_chunks)
         ]
         return pl.concat(frames, rechunk=False)
 
     def __reduce__(self) -> tuple:
         # The grid's values, not its kind (whose checks are closures).
-        return (_rebuild, (self.kind, self.grid.dims, self.grid.fixed, self.chunk_size))
+        return (
+            _rebuild,
+            (
+                self.kind,
+                self.grid.dims,
+                self.grid.fixed,
+                self.chunk_size,
+                self.max_points,
+                self.max_steps,
+            ),
+        )
 
     def __len__(self) -> int:
         return self.n_points
 
     def __repr__(self) -> str:
         dims = ", ".join(f"{k}[{len(v)}]" for k, v in self.grid.dims.items())
+        steps = ""
+        if self.grid.n_steps is not None:
+            more = " or more" if self.grid.steps_at_least else ""
+            steps = f" ({self.grid.n_steps:,} time steps{more})"
         return (
-            f"Study({self.kind!r}, {dims or 'one point'}: {self.n_points} points, "
+            f"Study({self.kind!r}, {dims or 'one point'}: {self.n_points} points{steps}, "
             f"{_count(self.n_chunks, 'chunk')} of {self.chunk_size})"
         )
 
+    def summary(self) -> str:
+        """The study in one line, with its size (as ``repr``)."""
+        return repr(self)
 
-def _rebuild(kind: StudyKind, dims: dict, fixed: dict, chunk_size: int) -> Study:
+
+def _rebuild(
+    kind: StudyKind,
+    dims: dict,
+    fixed: dict,
+    chunk_size: int,
+    max_points: int = MAX_POINTS,
+    max_steps: int = MAX_STEPS,
+) -> Study:
     """Unpickle a [`Study`][thermobear.Study] (through its validating constructor)."""
-    return Study(kind, dims, fixed, chunk_size=chunk_size)
+    return Study(
+        kind, dims, fixed, chunk_size=chunk_size, max_points=max_points, max_steps=max_steps
+    )

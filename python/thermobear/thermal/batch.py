@@ -19,6 +19,7 @@ from .._model_hook import (
 )
 from .._types import HeatModel, Lubrication, RacewayControl
 from ..bearing.ball_bearing import Bearing, _effects_arg, register_task
+from .heat_law import HEAT_LAW_OPTIONS, has_heat_law, heat_law_w, pop_heat_law
 from .state import DEFAULT_SPIN_FRICTION_COEFFICIENT, HEAT_MODEL_OPTIONS, _model_kwargs
 
 if TYPE_CHECKING:
@@ -71,7 +72,7 @@ def _scaled_points(fn: F) -> F:
 
 @renamed_kwargs(spin_friction="spin_friction_coefficient")
 @_scaled_points
-@takes_calibrated(lambda given: HEAT_MODEL_OPTIONS)
+@takes_calibrated(lambda given: (*HEAT_MODEL_OPTIONS, *HEAT_LAW_OPTIONS))
 def thermal_state_many(
     bearing: Bearing,
     points: Any,
@@ -128,12 +129,15 @@ def thermal_state_many(
         raise ConfigError(f"invalid bearing = {bearing!r}: give a thermobear.Bearing")
     names = ("speed_rpm", "axial_n", "radial_n")
     frame = operating_frame(points, names)
+    law = pop_heat_law(heat)
     options = _model_kwargs(
         lubricant, lubrication_factor_f0, spin_friction_coefficient, oil_air_temperature_c,
         ambient_temperature_c, housing_material, raceway_control, misalignment_rad,
         extra_heat_w, housing_conductance_scale, churning_oil_fraction,
         heat_model=heat_model, lubrication=lubrication, **heat,
     )  # fmt: skip
+    if has_heat_law(law):
+        return join_inputs(frame, _with_heat_law(bearing, frame, effects, options, law, threads))
     raw = _native.thermal_state_many(
         bearing._b,
         *_speed_and_loads(frame),
@@ -143,6 +147,38 @@ def thermal_state_many(
         progress=progress,
     )
     return join_inputs(frame, result_frame(raw))
+
+
+def _with_heat_law(
+    bearing: Bearing, frame: Any, effects: Any, options: dict[str, Any], law: Any, threads: Any
+) -> Any:
+    """The result rows of ``frame`` with an extra heat of its own speed law
+    (``heat_law``): the points of each speed in one native call with that
+    speed's extra heat, put back in the points' order."""
+    import numpy as np
+    import polars as pl
+
+    from ..bearing.batch import result_frame
+
+    speed, fa, fr = _speed_and_loads(frame)
+    parts, order = [], []
+    values, group = np.unique(speed, return_inverse=True)
+    for k, n in enumerate(values):
+        rows = np.flatnonzero(group == k)
+        extra = float(options["extra_heat_w"]) + float(heat_law_w(law, n))
+        raw = _native.thermal_state_many(
+            bearing._b, speed[rows], fa[rows], fr[rows], _effects_arg(effects),
+            {**options, "extra_heat_w": extra}, threads=cap_threads(threads), progress=None,
+        )  # fmt: skip
+        parts.append(result_frame(raw))
+        order.append(rows)
+    if not parts:
+        return result_frame(
+            _native.thermal_state_many(bearing._b, speed, fa, fr, _effects_arg(effects),
+                                       options, threads=cap_threads(threads), progress=None)
+        )  # fmt: skip
+    back = np.argsort(np.concatenate(order), kind="stable")
+    return pl.concat(parts, how="vertical_relaxed")[back]
 
 
 def _other_model(model: Any, points: Any, given: dict[str, Any], heat: dict[str, Any]) -> Any:

@@ -16,8 +16,10 @@ from typing import Any, Optional, Sequence
 from .. import _native
 from .. import _validate as val
 from .._deprecation import renamed_kwargs
+from .._input_checks import check_oil_temperature
 from .._model_hook import takes_calibrated
 from .._types import HeatModel, Lubrication, RacewayControl
+from .heat_law import HEAT_LAW_OPTIONS, plus_heat_law, pop_heat_law
 from .state import (
     DEFAULT_SPIN_FRICTION_COEFFICIENT,
     HEAT_MODEL_OPTIONS,
@@ -59,7 +61,7 @@ class IsothermalHeat(_HeatRows):
 
 
 @renamed_kwargs(spin_friction="spin_friction_coefficient")
-@takes_calibrated(lambda given: HEAT_MODEL_OPTIONS)
+@takes_calibrated(lambda given: (*HEAT_MODEL_OPTIONS, *HEAT_LAW_OPTIONS))
 def isothermal_heat(
     bearing: Any,
     speed_rpm: float,
@@ -85,12 +87,16 @@ def isothermal_heat(
     thermal network: the heat model options of
     [`thermal_state`][thermobear.thermal_state] (``heat_model``, ``lubrication``,
     ``lubrication_factor_f0``, ``spin_friction_coefficient``, ``churning_oil_fraction``,
-    ``extra_heat_w`` and the SKF keywords of ``HEAT_MODEL_OPTIONS``).
+    ``extra_heat_w``, the speed law of ``unknown_heat_linear_w``,
+    ``unknown_heat_quadratic_w``, ``unknown_heat_reference_rpm`` and the SKF
+    keywords of ``HEAT_MODEL_OPTIONS``).
     A temperature outside the lubricant's data raises ``ConfigError``
     naming ``oil_temperature_c``. A calibrated model
     ([`CalibratedModel`][thermobear.CalibratedModel]) stands for its bearing
     (its heat-model options; the network's do not act here)."""
     _check_bearing_call(bearing, {})  # unknown keywords: _model_kwargs names them
+    law = pop_heat_law(heat)
+    extra_heat_w = plus_heat_law(extra_heat_w, law, speed_rpm)  # a speed law's heat
     # the network's boundary temperatures are not used here: neutral 40 C
     neutral = (40.0, 40.0, "aluminium")
     args = (lubricant, lubrication_factor_f0, spin_friction_coefficient, *neutral, raceway_control,
@@ -98,5 +104,6 @@ def isothermal_heat(
     options = _model_kwargs(*args, heat_model=heat_model, lubrication=lubrication, **heat)
     point = operating_point(speed_rpm, axial_n, radial_n)
     oil_c = val.real("oil_temperature_c", oil_temperature_c, -273.15)
+    check_oil_temperature(options["lubricant"], oil_c)
     raw = checked_native(_native.isothermal_heat, bearing, point, (oil_c,), effects, options)
     return IsothermalHeat(raw)

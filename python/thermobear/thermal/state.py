@@ -22,12 +22,14 @@ import numpy as np
 from .. import _native, plausibility
 from .. import _validate as val
 from .._deprecation import renamed_kwargs, warn_renamed
+from .._input_checks import check_supply
 from .._model_hook import takes_calibrated
 from .._names import BEARING_NODES, BEARING_SYMBOLS
 from .._types import HeatModel, Lubrication, RacewayControl
 from ..bearing.ball_bearing import Bearing, BearingSolution, _effects_arg, register_task
 from ..bearing.material import _native_material
 from ..errors import ConfigError, ConvergenceError
+from .heat_law import HEAT_LAW_OPTIONS, plus_heat_law, pop_heat_law
 from .oil_supply import SUPPLY_OPTIONS, supply_dict
 
 if TYPE_CHECKING:
@@ -269,7 +271,13 @@ def _model_kwargs(
     heat = seal_moment_option(heat)
     for k in heat:
         if k not in HEAT_MODEL_OPTIONS:
-            raise ConfigError(f"invalid argument = {k!r}: not a thermal or heat-model option")
+            import inspect
+
+            known = [*HEAT_MODEL_OPTIONS, *inspect.signature(_model_kwargs).parameters]
+            raise ConfigError(
+                f"invalid argument = {k!r}: not a thermal or heat-model option"
+                + val.did_you_mean(k, known)
+            )
     h = {**HEAT_MODEL_OPTIONS, **heat}
     kelvin = -273.15
     return {
@@ -335,7 +343,7 @@ def lubrication_defaults(
 
 
 @renamed_kwargs(spin_friction="spin_friction_coefficient")
-@takes_calibrated(lambda given: HEAT_MODEL_OPTIONS)
+@takes_calibrated(lambda given: (*HEAT_MODEL_OPTIONS, *HEAT_LAW_OPTIONS))
 def thermal_state(
     bearing: Any,
     speed_rpm: float,
@@ -381,6 +389,10 @@ def thermal_state(
     ``ThermalState.heat``). ``heat_model`` ("palmgren" or "skf": heat
     rows rolling, sliding, seal, extra, churning), ``lubrication`` (sets the
     defaults of f0 and X) and the SKF keywords: ``HEAT_MODEL_OPTIONS``.
+    An extra heat with its own speed law: ``unknown_heat_linear_w``,
+    ``unknown_heat_quadratic_w`` [W] and ``unknown_heat_reference_rpm``
+    (``max(0, a x + b x^2)``, ``x = speed_rpm / reference``, added to
+    ``extra_heat_w``; the unknown heat source of a diagnosis).
     The defaults reproduce the baseline. Returns a
     [`ThermalState`][thermobear.ThermalState]. Raises ``ThermalRunawayError`` when a node passes
     the lubricant's highest temperature or heat, temperatures and contact
@@ -400,7 +412,9 @@ def thermal_state(
                  "churning_oil_fraction": churning_oil_fraction}  # fmt: skip
         return _dispatch(bearing, speed_rpm, given, kwargs)
     heat = {k: kwargs.pop(k) for k in list(kwargs) if k in HEAT_MODEL_OPTIONS}
+    law = pop_heat_law(kwargs)
     _check_bearing_call(bearing, kwargs)
+    extra_heat_w = plus_heat_law(extra_heat_w, law, speed_rpm)  # a speed law's heat
     if spin_friction_coefficient is None:
         spin_friction_coefficient = DEFAULT_SPIN_FRICTION_COEFFICIENT
     args = (lubricant, lubrication_factor_f0, spin_friction_coefficient, oil_air_temperature_c,
@@ -433,6 +447,10 @@ def checked_native(
     the plausibility of the solved state after, and a convergence failure
     naming the operating point."""
     plausibility.check_misalignment(options["misalignment_rad"], plausibility._geometry(bearing))
+    check_supply(
+        plausibility._geometry(bearing), options["lubrication"], options["oil_supply"],
+        point["speed_rpm"],
+    )  # fmt: skip
     try:
         raw = fn(bearing._b, point["speed_rpm"], point["axial_n"], point["radial_n"], *extra,
                  _effects_arg(effects), options)  # fmt: skip
@@ -454,8 +472,13 @@ def _check_bearing_call(bearing: Any, kwargs: dict[str, Any]) -> None:
     from ..errors import ConfigError
 
     if kwargs:
+        import inspect
+
+        k = sorted(kwargs)[0]
+        known = [*inspect.signature(thermal_state).parameters, *HEAT_MODEL_OPTIONS]
         raise ConfigError(
-            f"invalid argument = {sorted(kwargs)[0]!r}: not a thermal_state option for a Bearing"
+            f"invalid argument = {k!r}: not a thermal_state option for a Bearing"
+            + val.did_you_mean(k, [n for n in known if n != "kwargs"])
         )
     if not isinstance(bearing, Bearing):
         raise ConfigError(f"invalid bearing = {bearing!r}: give a thermobear.Bearing")

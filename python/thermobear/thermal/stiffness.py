@@ -21,6 +21,7 @@ from .._partial import speed_frames
 from .._types import RacewayControl, StiffnessMode
 from ..bearing.ball_bearing import Bearing, _effects_arg
 from ..errors import ConfigError, ThermobearError
+from .heat_law import HEAT_LAW_OPTIONS, has_heat_law, heat_law_w, pop_heat_law
 from .state import DEFAULT_SPIN_FRICTION_COEFFICIENT, HEAT_MODEL_OPTIONS, _model_kwargs
 
 if TYPE_CHECKING:
@@ -32,7 +33,7 @@ if TYPE_CHECKING:
 THERMAL_OPTIONS = (
     "lubricant", "lubrication_factor_f0", "spin_friction_coefficient", "oil_air_temperature_c",
     "ambient_temperature_c", "housing_material", "extra_heat_w", "housing_conductance_scale",
-    "churning_oil_fraction", *HEAT_MODEL_OPTIONS,
+    "churning_oil_fraction", *HEAT_MODEL_OPTIONS, *HEAT_LAW_OPTIONS,
 )  # fmt: skip
 
 
@@ -106,6 +107,7 @@ def stiffness_curve(
         raise ConfigError(
             f"invalid argument = {sorted(thermal_options)[0]!r}: "
             "only the thermal mode takes thermal options"
+            + val.did_you_mean(sorted(thermal_options)[0], THERMAL_OPTIONS)
         )
     return _mechanical_stiffness_curve(
         bearing,
@@ -219,10 +221,15 @@ def thermal_stiffness_curve(
     fraction 0..1; see [`thermal_state`][thermobear.thermal_state]), ``centrifugal_expansion_um``,
     ``thermal_iterations``. ``heat``: the heat-model keywords of
     [`thermal_state`][thermobear.thermal_state] (``heat_model``, ``lubrication``, ``skf_series``,
-    ``sliding_friction_ehl``, ``replenishment_krs``, ``seal_moment_n_m``)."""
+    ``sliding_friction_ehl``, ``replenishment_krs``, ``seal_moment_n_m``) and
+    an extra heat with its own speed law (``unknown_heat_linear_w``,
+    ``unknown_heat_quadratic_w``, ``unknown_heat_reference_rpm``: see
+    [`thermal_state`][thermobear.thermal_state]; each speed then solves with its
+    own extra heat, one speed at a time)."""
     import polars as pl
 
     speeds = val.reals("speeds_rpm", speeds_rpm, 0.0)
+    law = pop_heat_law(heat)
     settings = _model_kwargs(
         lubricant,
         lubrication_factor_f0,
@@ -245,15 +252,29 @@ def thermal_stiffness_curve(
         s = pl.Series("speed_rpm", np.asarray(at, dtype=float))
         return df.with_columns(s).with_columns(pl.lit("thermal").alias("mode"))
 
+    fa, fr = val.real("axial_n", axial_n), val.real("radial_n", radial_n)
+    eff = _effects_arg(effects)
+    if has_heat_law(law):  # each speed with its own extra heat
+        extra = float(settings["extra_heat_w"]) + heat_law_w(law, speeds)
+        parts = []
+        for i, (n, h) in enumerate(zip(speeds.tolist(), extra.tolist(), strict=True)):
+            one = {**settings, "extra_heat_w": h}
+            parts.append(_curve(bearing, np.array([n]), fa, fr, eff, one, frame, None))
+            if progress is not None:
+                progress(i + 1, speeds.size)
+        return pl.concat(parts)
+    return _curve(bearing, speeds, fa, fr, eff, settings, frame, progress)
+
+
+def _curve(
+    bearing: Bearing, speeds: Any, fa: float, fr: float, eff: Any, settings: Any, frame: Any,
+    progress: Any,
+) -> polars.DataFrame:  # fmt: skip
+    """One native thermal stiffness curve as a frame; a failure carries
+    the speeds that finished (``speed_frames``)."""
     try:
         cols = _native.thermal_stiffness_curve(
-            bearing._b,
-            speeds,
-            val.real("axial_n", axial_n),
-            val.real("radial_n", radial_n),
-            _effects_arg(effects),
-            settings,
-            progress=progress,
+            bearing._b, speeds, fa, fr, eff, settings, progress=progress
         )
     except ThermobearError as e:
         speed_frames(e, speeds, frame)
