@@ -5,14 +5,12 @@ long cell."""
 from __future__ import annotations
 
 import logging
-import os
-import signal
-import threading
 import time
 from typing import Any, Callable
 
 import numpy as np
 import pytest
+from test_limits import sigint_latency
 
 import thermobear as tb
 from thermobear.gear import dynamics as dyn
@@ -159,27 +157,6 @@ def test_sigint_stops_a_single_huge_cell(gs, name):
     would run for minutes: KeyboardInterrupt, well within the bound."""
     with pytest.raises(tb.ConfigError, match="5,00.,000,000 RK4 steps: more than max_steps"):
         ONE_CELL[name](gs)  # refused at the default cap
-    fired: dict = {}
-    finished = threading.Event()
-
-    def interrupt() -> None:
-        if not finished.is_set():
-            fired["t"] = time.perf_counter()
-            os.kill(os.getpid(), signal.SIGINT)
-
-    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
-    timer = threading.Timer(0.3, interrupt)
-    try:
-        timer.start()
-        with pytest.raises(KeyboardInterrupt):
-            try:
-                ONE_CELL[name](gs, max_steps=10**10)
-            finally:
-                finished.set()
-        latency = time.perf_counter() - fired["t"]
-    finally:
-        timer.cancel()
-        timer.join()
-        signal.signal(signal.SIGINT, previous)
+    latency = sigint_latency(lambda: ONE_CELL[name](gs, max_steps=10**10), 0.3)
     print(f"{name}: stopped {latency * 1e3:.1f} ms after SIGINT")
     assert latency < STOP_BOUND_S, f"{name} took {latency:.3f} s to stop"

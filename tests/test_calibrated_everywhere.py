@@ -41,6 +41,9 @@ EXCLUDED = {
     "spindle_candidates": "deprecated alias of candidates (which is covered)",
     "predict": "takes a calibrated model by design: it has no machine form to compare with",
     "separating_measurement": "takes a calibrated tie by design: no machine form",
+    "BearingSet": "a part of a spindle description: a bearing's geometry by name or a Bearing; "
+    "a calibrated bearing's options are single-bearing heat settings, which the spindle's own "
+    "lubrication and motor parts set",
 }
 
 #: Plot functions whose first parameter is no result of a model.
@@ -318,6 +321,9 @@ def test_excluded_calls_refuse_or_take_the_model_cleanly(name, bearing_model, sp
     elif name == "separating_measurement":
         with pytest.raises(tb.ConfigError, match="two explanations"):
             tb.separating_measurement(bearing_model, {"speeds_rpm": [8000.0], "axial_n": 300.0})
+    elif name == "BearingSet":
+        with pytest.raises(tb.ConfigError, match="invalid bearing"):
+            tb.BearingSet(bearing_model)
     else:
         assert name in ("diagnose_spindle", "spindle_candidates")
 

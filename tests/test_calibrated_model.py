@@ -220,3 +220,18 @@ def test_a_spindle_model_gives_its_spec_state_and_round_trips(tmp_path):
     assert copy.spec.options == spec.options and tb.thermal_state(copy, 12000.0).equals(state)
     assert tb.transient(m, speed_rpm=12000.0, duration_s=20.0, dt_s=10.0).height == 3
     assert tb.vibration(m, [12000.0])["velocity_rms_mm_s"][0] > 0.0
+
+
+@pytest.mark.parametrize("value", ["", float("nan"), -1.0, None, [1.0]])
+def test_a_bearing_spec_names_a_load_scale_that_is_no_scale(value):
+    """A load scale is a finite number >= 0, given to the spec or to a
+    copy of it, globally or per level (a wrong one would otherwise fail
+    later, far from where it was given)."""
+    from thermobear import diagnosis as D
+
+    b = tb.Bearing.preset("7008C")
+    with pytest.raises(tb.ConfigError, match="invalid axial_load_scale = "):
+        D.BearingModelSpec(b, axial_load_scale=value)
+    with pytest.raises(tb.ConfigError, match="invalid radial_load_scale@300 = "):
+        D.BearingModelSpec(b).with_setting(**{"radial_load_scale@300": value})
+    assert D.BearingModelSpec(b, axial_load_scale=1.2).options["axial_load_scale"] == 1.2

@@ -235,6 +235,10 @@ def test_cli_diagnoses_seed_b_measurements_from_a_spindle_preset(tmp_path, capsy
     csv = files("thermobear") / "configs" / "seed_b_measurements.csv"
     out = tmp_path / "out"
     args = ["diagnose", str(csv), "--spindle", "seed-ceramic-spindle", "--out", str(out)]
+    # two speeds: the default holdout (the highest speeds) is refused, as by the API
+    assert main(args + ["--without", "thermal_displacement"]) == 1
+    assert "holding out the highest speeds needs at least 3" in capsys.readouterr().err
+    args += ["--holdout", "none"]
     assert main(args + ["--without", "thermal_displacement"]) == 0
     text = capsys.readouterr().out
     assert "verdict:" in text and (out / "diagnosis_gap.csv").exists()

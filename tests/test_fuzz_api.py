@@ -13,7 +13,9 @@ huge integer, or a plausible number. Each call must
 
 Profiles: the default (CI) runs the short counts of ``CASES`` (2,550 in
 total: at least 2,000, under two minutes on a 2-core machine);
-``THERMOBEAR_FUZZ=long`` runs the long ones (120,000 in total). The counts
+``THERMOBEAR_FUZZ=long`` runs the long ones (120,000 in total; with
+``THERMOBEAR_FUZZ_SCALE`` a share of them, on the seed of
+``pytest --hypothesis-seed=N``). The counts
 of the last long run are on the docs page "Limits" (docs/concepts/limits.md).
 """
 
@@ -34,6 +36,9 @@ from hypothesis import strategies as st
 import thermobear as tb
 
 LONG = os.environ.get("THERMOBEAR_FUZZ", "").lower() == "long"
+#: A share of the long counts (``THERMOBEAR_FUZZ_SCALE=0.2``: a fifth), for a
+#: run of a given size on a seed of one's own (``pytest --hypothesis-seed=N``).
+SCALE = float(os.environ.get("THERMOBEAR_FUZZ_SCALE", "1"))
 
 #: Slowest call allowed [s] (the slowest entry fuzzed here, a spindle steady
 #: state near its runaway, takes well under a second on this machine).
@@ -68,7 +73,7 @@ def _bound_s(kwargs: dict[str, Any]) -> float:
 
 
 def _cases(group: str) -> int:
-    return CASES[group][1 if LONG else 0]
+    return max(1, int(CASES[group][1] * SCALE)) if LONG else CASES[group][0]
 
 
 def _settings(group: str) -> Callable[[Any], Any]:
@@ -359,15 +364,21 @@ ROTOR = "seed-ceramic-spindle"
 _FUZZ_STEPS = 20_000
 
 
+#: The speeds a time response runs without ``speeds_rpm`` (``tb.vibration``'s
+#: default grid) [rpm].
+_DEFAULT_SPEEDS = np.linspace(3_000.0, 30_000.0, 10)
+
+
 def _short_record(kwargs: dict[str, Any], speeds: Any) -> dict[str, Any]:
     """``kwargs`` with a numeric ``duration_s`` cut to ``_FUZZ_STEPS`` steps of
-    1/64 revolution at the fastest numeric speed (wild values stay)."""
+    1/64 revolution in all, over every numeric speed (the default grid
+    without speeds; wild values stay)."""
     d = kwargs.get("duration_s")
-    arr = np.atleast_1d(np.asarray(speeds if speeds is not None else 30_000.0, dtype=object))
+    arr = np.atleast_1d(np.asarray(speeds if speeds is not None else _DEFAULT_SPEEDS, dtype=object))
     nums = [float(x) for x in arr.ravel() if type(x) in (int, float) and abs(x) < 1e300]
     if type(d) in (int, float) and math.isfinite(d) and d > 0 and nums:
-        top = max(max(abs(x) for x in nums), 1.0)
-        kwargs["duration_s"] = min(d, _FUZZ_STEPS * 60.0 / 64.0 / top)
+        revs_per_s = max(sum(abs(x) for x in nums), 1.0) / 60.0
+        kwargs["duration_s"] = min(d, _FUZZ_STEPS / 64.0 / revs_per_s)
     return kwargs
 
 

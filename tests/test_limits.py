@@ -14,6 +14,7 @@ import signal
 import threading
 import time
 import warnings
+from typing import Any
 
 import numpy as np
 import polars as pl
@@ -194,10 +195,10 @@ def test_a_callback_returning_none_or_true_goes_on(bearing):
     assert bearing.solve_many(_points(5), progress=lambda d, t: True).height == 5
 
 
-@pytest.mark.parametrize("name", sorted(WITH_PROGRESS) + sorted(WITHOUT_PROGRESS))
-def test_ctrl_c_stops_the_call_quickly(name, bearing, spindle):
-    """A real SIGINT from another thread, 0.15 s into seconds of work."""
-    call = {**WITH_PROGRESS, **WITHOUT_PROGRESS}[name]
+def sigint_latency(call: Any, after_s: float) -> float:
+    """Seconds from a real SIGINT, sent from a timer thread ``after_s``
+    into ``call()``, to the KeyboardInterrupt it must raise (the test
+    fails if ``call`` returns instead)."""
     fired: dict = {}
     finished = threading.Event()
 
@@ -207,19 +208,26 @@ def test_ctrl_c_stops_the_call_quickly(name, bearing, spindle):
             os.kill(os.getpid(), signal.SIGINT)
 
     previous = signal.signal(signal.SIGINT, signal.default_int_handler)
-    timer = threading.Timer(0.15, interrupt)
+    timer = threading.Timer(after_s, interrupt)
     try:
         timer.start()
         with pytest.raises(KeyboardInterrupt):
             try:
-                call(bearing, spindle, None)
+                call()
             finally:
                 finished.set()
-        latency = time.perf_counter() - fired["t"]
+        return time.perf_counter() - fired["t"]
     finally:
         timer.cancel()
         timer.join()
         signal.signal(signal.SIGINT, previous)
+
+
+@pytest.mark.parametrize("name", sorted(WITH_PROGRESS) + sorted(WITHOUT_PROGRESS))
+def test_ctrl_c_stops_the_call_quickly(name, bearing, spindle):
+    """A real SIGINT from another thread, 0.15 s into seconds of work."""
+    call = {**WITH_PROGRESS, **WITHOUT_PROGRESS}[name]
+    latency = sigint_latency(lambda: call(bearing, spindle, None), 0.15)
     assert latency < STOP_BOUND_S, f"{name} took {latency:.3f} s to stop"
 
 

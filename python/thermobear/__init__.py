@@ -90,7 +90,16 @@ from .predict import (  # the function shadows the subpackage
 )
 from .rotor import campbell, critical_speeds, spectrum, spectrum_orders, vibration
 from .spindle import (
+    BearingSet,
+    Cooling,
+    Housing,
+    Lubrication,
+    MagneticPull,
+    Motor,
+    Preload,
+    Shaft,
     Spindle,
+    ToolLoad,
     compensation_preload,
     optimal_preload,
     spindle_grid,
@@ -183,6 +192,15 @@ __all__ = [
     "regimes",
     # spindle
     "Spindle",
+    "Shaft",
+    "BearingSet",
+    "Preload",
+    "Housing",
+    "Motor",
+    "MagneticPull",
+    "Cooling",
+    "Lubrication",
+    "ToolLoad",
     "compensation_preload",
     "optimal_preload",
     "spindle_grid",

@@ -345,6 +345,7 @@ def rotor_campbell(
     effects: Optional[Sequence[str]] = None,
     offsets: Optional[dict[str, list[float]]] = None,
     progress: Optional[Callable[[int, int], None]] = None,
+    rotor: Optional[dict[str, Any]] = None,
 ) -> dict[str, Any]: ...
 def rotor_critical_speeds(
     row_material: str,
@@ -354,6 +355,7 @@ def rotor_critical_speeds(
     harmonic: float = 1.0,
     effects: Optional[Sequence[str]] = None,
     offsets: Optional[dict[str, list[float]]] = None,
+    rotor: Optional[dict[str, Any]] = None,
 ) -> dict[str, Any]: ...
 def rotor_vibration(
     row_material: str,
@@ -366,6 +368,7 @@ def rotor_vibration(
     effects: Optional[Sequence[str]] = None,
     offsets: Optional[dict[str, list[float]]] = None,
     progress: Optional[Callable[[int, int], None]] = None,
+    rotor: Optional[dict[str, Any]] = None,
 ) -> dict[str, Any]: ...
 def rotor_spectrum(
     row_material: str,
@@ -377,6 +380,7 @@ def rotor_spectrum(
     unbalance_g_mm: Optional[float] = None,
     effects: Optional[Sequence[str]] = None,
     offsets: Optional[dict[str, list[float]]] = None,
+    rotor: Optional[dict[str, Any]] = None,
 ) -> dict[str, Any]: ...
 def rotor_default_effects() -> list[str]: ...
 
@@ -388,6 +392,16 @@ class Spindle:
     def preset(name: str) -> Spindle: ...
     @staticmethod
     def preset_names() -> list[str]: ...
+    @staticmethod
+    def from_config(
+        config_json: str,
+        name: str,
+        front_bearing: Bearing | None = None,
+        rear_bearing: Bearing | None = None,
+        lubricant: str | None = None,
+        heat: dict[str, Any] | None = None,
+    ) -> Spindle: ...
+    def config_json(self) -> str: ...
     def with_options(
         self,
         preload_n: float | None = None,

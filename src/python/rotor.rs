@@ -13,10 +13,56 @@ use crate::bearing::RacewayOffsets;
 use crate::effects::{Effect, EffectSet};
 use crate::error::{finite, Error, Result};
 use crate::rotor::modal::Whirl;
+use crate::rotor::presets::SpindleRotorGeometry;
 use crate::rotor::spindle_bearings::OffsetTable;
 use crate::rotor::spindle_vibration::{
-    RowMaterial, SpindleVibration, SpindleVibrationConfig, UnbalanceSpec, VibrationPoint,
+    CustomRotor, RowMaterial, SpindleVibration, SpindleVibrationConfig, UnbalanceSpec, VibrationPoint,
 };
+
+/// A spindle's own rotor (dict keys as the fields; lengths in m, bearings
+/// as the JSON of `Bearing`): replaces the seed rotor and `row_material`.
+#[derive(FromPyObject)]
+struct RotorArg {
+    #[pyo3(item)]
+    sections_m: Vec<(f64, f64, f64)>,
+    #[pyo3(item)]
+    front_rows_m: [f64; 2],
+    #[pyo3(item)]
+    rear_rows_m: [f64; 2],
+    #[pyo3(item)]
+    core_span_m: (f64, f64),
+    #[pyo3(item)]
+    core_outer_diameter_m: f64,
+    #[pyo3(item)]
+    core_inner_diameter_m: f64,
+    #[pyo3(item)]
+    air_gap_m: f64,
+    #[pyo3(item)]
+    front_bearing_json: String,
+    #[pyo3(item)]
+    rear_bearing_json: String,
+}
+
+impl RotorArg {
+    fn custom(self) -> Result<CustomRotor> {
+        let bearing = |field: &str, text: &str| -> Result<crate::bearing::Bearing> {
+            serde_json::from_str(text).map_err(|e| Error::config(field, "json", e.to_string()))
+        };
+        Ok(CustomRotor {
+            front_bearing: bearing("rotor.front_bearing_json", &self.front_bearing_json)?,
+            rear_bearing: bearing("rotor.rear_bearing_json", &self.rear_bearing_json)?,
+            geometry: SpindleRotorGeometry {
+                sections_m: self.sections_m,
+                front_rows_m: self.front_rows_m,
+                rear_rows_m: self.rear_rows_m,
+                core_span_m: self.core_span_m,
+                core_outer_diameter_m: self.core_outer_diameter_m,
+                core_inner_diameter_m: self.core_inner_diameter_m,
+                air_gap_m: self.air_gap_m,
+            },
+        })
+    }
+}
 
 fn material(name: &str) -> Result<RowMaterial> {
     match name {
@@ -90,8 +136,15 @@ fn build(
     preload_n: f64,
     effects: Option<Vec<String>>,
     offsets: Option<Offsets>,
+    rotor: Option<RotorArg>,
 ) -> Result<SpindleVibration> {
-    let mut c = SpindleVibrationConfig::seed(material(row_material)?);
+    let mut c = match rotor {
+        Some(r) => SpindleVibrationConfig {
+            rotor: Some(r.custom()?),
+            ..SpindleVibrationConfig::seed(RowMaterial::Steel)
+        },
+        None => SpindleVibrationConfig::seed(material(row_material)?),
+    };
     c.preload_n = preload_n;
     if let Some(names) = effects {
         c.effects = EffectSet::from_names(&names)?;
@@ -130,7 +183,7 @@ fn whirl_name(w: Whirl) -> &'static str {
 
 /// Campbell diagram: flat columns speed_rpm, mode, frequency_hz, damping_ratio, whirl.
 #[pyfunction]
-#[pyo3(signature = (row_material, preload_n, speeds_rpm, modes=8, effects=None, offsets=None, progress=None))]
+#[pyo3(signature = (row_material, preload_n, speeds_rpm, modes=8, effects=None, offsets=None, progress=None, rotor=None))]
 #[allow(clippy::too_many_arguments)]
 fn rotor_campbell<'py>(
     py: Python<'py>,
@@ -141,13 +194,16 @@ fn rotor_campbell<'py>(
     effects: Option<Vec<String>>,
     offsets: Option<&Bound<'py, PyDict>>,
     progress: Option<&Bound<'py, PyAny>>,
+    rotor: Option<RotorArg>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let sp = speeds(&speeds_rpm).py_err()?;
     if modes == 0 {
         return Err(Error::config("modes", 0, "ask for at least one mode")).py_err();
     }
     let off = offsets_arg(offsets)?;
-    let s = py.detach(|| build(row_material, preload_n, effects, off)).py_err()?;
+    let s = py
+        .detach(|| build(row_material, preload_n, effects, off, rotor))
+        .py_err()?;
     let pts = map_interruptible(py, &sp, None, progress, |&n| s.campbell(&[n], modes))?;
     let (mut speed, mut mode, mut freq, mut zeta, mut whirl) = (vec![], vec![], vec![], vec![], vec![]);
     for p in pts {
@@ -171,7 +227,7 @@ fn rotor_campbell<'py>(
 
 /// Critical speeds (crossings of the branches with f = harmonic x speed / 60).
 #[pyfunction]
-#[pyo3(signature = (row_material, preload_n, speeds_rpm, modes=8, harmonic=1.0, effects=None, offsets=None))]
+#[pyo3(signature = (row_material, preload_n, speeds_rpm, modes=8, harmonic=1.0, effects=None, offsets=None, rotor=None))]
 #[allow(clippy::too_many_arguments)]
 fn rotor_critical_speeds<'py>(
     py: Python<'py>,
@@ -182,6 +238,7 @@ fn rotor_critical_speeds<'py>(
     harmonic: f64,
     effects: Option<Vec<String>>,
     offsets: Option<&Bound<'py, PyDict>>,
+    rotor: Option<RotorArg>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let sp = speeds(&speeds_rpm).py_err()?;
     crate::error::positive("harmonic", harmonic).py_err()?;
@@ -189,7 +246,9 @@ fn rotor_critical_speeds<'py>(
         return Err(Error::config("modes", 0, "ask for at least one mode")).py_err();
     }
     let off = offsets_arg(offsets)?;
-    let s = py.detach(|| build(row_material, preload_n, effects, off)).py_err()?;
+    let s = py
+        .detach(|| build(row_material, preload_n, effects, off, rotor))
+        .py_err()?;
     // One speed per item (each independent, as in one Campbell diagram):
     // Ctrl-C skips the speeds not started.
     let pts = map_interruptible(py, &sp, None, None, |&n| s.campbell(&[n], modes))?;
@@ -232,7 +291,7 @@ fn unbalance_spec(grade: Option<f64>, g_mm: Option<f64>) -> Result<UnbalanceSpec
 /// unbalance response, linearised rows) or "time" (time response with the
 /// nonlinear ball forces, `duration_s` per speed).
 #[pyfunction]
-#[pyo3(signature = (row_material, preload_n, speeds_rpm, unbalance_grade=None, unbalance_g_mm=None, method="frequency", duration_s=0.1, effects=None, offsets=None, progress=None))]
+#[pyo3(signature = (row_material, preload_n, speeds_rpm, unbalance_grade=None, unbalance_g_mm=None, method="frequency", duration_s=0.1, effects=None, offsets=None, progress=None, rotor=None))]
 #[allow(clippy::too_many_arguments)]
 fn rotor_vibration<'py>(
     py: Python<'py>,
@@ -246,6 +305,7 @@ fn rotor_vibration<'py>(
     effects: Option<Vec<String>>,
     offsets: Option<&Bound<'py, PyDict>>,
     progress: Option<&Bound<'py, PyAny>>,
+    rotor: Option<RotorArg>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let sp = speeds(&speeds_rpm).py_err()?;
     let time = match method {
@@ -260,7 +320,9 @@ fn rotor_vibration<'py>(
     }
     let spec = unbalance_spec(unbalance_grade, unbalance_g_mm).py_err()?;
     let off = offsets_arg(offsets)?;
-    let s = py.detach(|| build(row_material, preload_n, effects, off)).py_err()?;
+    let s = py
+        .detach(|| build(row_material, preload_n, effects, off, rotor))
+        .py_err()?;
     let u = s.unbalance(spec).py_err()?;
     let pts = map_interruptible(py, &sp, None, progress, |&n| -> Result<VibrationPoint> {
         if time {
@@ -287,7 +349,7 @@ fn rotor_vibration<'py>(
 
 /// Spectrum of the nose velocity from a time response at one speed.
 #[pyfunction]
-#[pyo3(signature = (row_material, preload_n, speed_rpm, duration_s=0.2, nonlinear=true, unbalance_grade=None, unbalance_g_mm=None, effects=None, offsets=None))]
+#[pyo3(signature = (row_material, preload_n, speed_rpm, duration_s=0.2, nonlinear=true, unbalance_grade=None, unbalance_g_mm=None, effects=None, offsets=None, rotor=None))]
 #[allow(clippy::too_many_arguments)]
 fn rotor_spectrum<'py>(
     py: Python<'py>,
@@ -300,11 +362,12 @@ fn rotor_spectrum<'py>(
     unbalance_g_mm: Option<f64>,
     effects: Option<Vec<String>>,
     offsets: Option<&Bound<'py, PyDict>>,
+    rotor: Option<RotorArg>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let spec = unbalance_spec(unbalance_grade, unbalance_g_mm).py_err()?;
     let off = offsets_arg(offsets)?;
     let (t, f, a, u) = watched(py, 1, None, |_, _| -> Result<_> {
-        let s = build(row_material, preload_n, effects, off)?;
+        let s = build(row_material, preload_n, effects, off, rotor)?;
         let u = s.unbalance(spec)?;
         let t = s.time_vibration(speed_rpm, duration_s, 0.0, &u, nonlinear)?;
         let (f, a) = s.spectrum(&t)?;

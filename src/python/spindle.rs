@@ -146,6 +146,47 @@ impl PySpindle {
         Spindle::preset_names()
     }
 
+    /// A spindle from a full configuration: `config_json` as `config_json`
+    /// returns it (every field checked, by name), with the bearings of the
+    /// front and rear pairs replaced when given, the lubricant by preset
+    /// name when given, and the heat-model settings `heat` applied last (as
+    /// `with_options`).
+    #[staticmethod]
+    #[pyo3(signature = (config_json, name, front_bearing=None, rear_bearing=None, lubricant=None, heat=None))]
+    fn from_config(
+        py: Python<'_>,
+        config_json: &str,
+        name: &str,
+        front_bearing: Option<PyRef<'_, super::bearing::PyBearing>>,
+        rear_bearing: Option<PyRef<'_, super::bearing::PyBearing>>,
+        lubricant: Option<&str>,
+        heat: Option<SpindleHeatArgs>,
+    ) -> PyResult<Self> {
+        let mut cfg = SpindleConfig::from_json(config_json).py_err()?;
+        if let Some(b) = front_bearing {
+            cfg.params.front_bearing = b.inner.clone();
+        }
+        if let Some(b) = rear_bearing {
+            cfg.params.rear_bearing = b.inner.clone();
+        }
+        if let Some(l) = lubricant {
+            cfg.params.lubricant = crate::thermal::lubricant::Lubricant::preset(l).py_err()?;
+        }
+        if let Some(h) = heat {
+            h.apply(&mut cfg).py_err()?;
+        }
+        let inner = py.detach(|| Spindle::new(cfg)).py_err()?;
+        Ok(PySpindle {
+            inner,
+            name: name.to_string(),
+        })
+    }
+
+    /// The full configuration as JSON (floats round-trip exactly).
+    fn config_json(&self) -> PyResult<String> {
+        self.inner.config.to_json().py_err()
+    }
+
     /// A copy with other settings (None keeps the current value).
     #[pyo3(signature = (preload_n=None, preload_kind=None, spring_rate_n_per_um=None, radial_load_n=None, effects=None, spin_friction=None, heat=None))]
     #[allow(clippy::too_many_arguments)]

@@ -102,48 +102,144 @@ impl Default for SpindleParameters {
     }
 }
 
+/// The layout of a motorized spindle rotor: shaft steps, bearing rows,
+/// rotor core; the tool holder and the core density are those of the seed
+/// B spindle (module doc). Lengths from the tool nose (z = 0) \[m\].
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpindleRotorGeometry {
+    /// Shaft steps (length, outer diameter, inner diameter) \[m\] from the nose.
+    pub sections_m: Vec<(f64, f64, f64)>,
+    /// Load positions of the two front rows \[m\].
+    pub front_rows_m: [f64; 2],
+    /// Load positions of the two rear rows \[m\].
+    pub rear_rows_m: [f64; 2],
+    /// Axial span of the motor rotor core \[m\].
+    pub core_span_m: (f64, f64),
+    /// Outer diameter of the rotor core \[m\].
+    pub core_outer_diameter_m: f64,
+    /// Inner diameter of the rotor core (its seat on the shaft) \[m\].
+    pub core_inner_diameter_m: f64,
+    /// Radial air gap of the motor \[m\].
+    pub air_gap_m: f64,
+}
+
+impl SpindleRotorGeometry {
+    /// The assumed seed B spindle (module doc).
+    pub fn seed_b() -> Self {
+        let bore = 0.016;
+        SpindleRotorGeometry {
+            sections_m: vec![
+                (0.020, 0.060, 0.030),
+                (0.055, 0.045, bore),
+                (0.030, 0.050, bore),
+                (0.130, 0.050, bore),
+                (0.040, 0.045, bore),
+                (0.045, 0.040, bore),
+                (0.020, 0.035, bore),
+            ],
+            front_rows_m: FRONT_BEARING_POSITIONS_M,
+            rear_rows_m: REAR_BEARING_POSITIONS_M,
+            core_span_m: ROTOR_CORE_SPAN_M,
+            core_outer_diameter_m: ROTOR_CORE_OUTER_DIAMETER_M,
+            core_inner_diameter_m: 0.050,
+            air_gap_m: AIR_GAP_M,
+        }
+    }
+
+    /// Shaft steps of shaft steel.
+    pub fn shaft(&self) -> Result<Vec<ShaftSection>> {
+        let s = Material::shaft_steel();
+        self.sections_m
+            .iter()
+            .map(|&(l, d, di)| ShaftSection::new(l, d, di, s.clone()))
+            .collect()
+    }
+
+    /// The tool holder at the nose and the rotor core as 5 slices.
+    pub fn disks(&self) -> Result<Vec<Disk>> {
+        let (z0, z1) = self.core_span_m;
+        crate::error::positive("core_length_m", z1 - z0)?;
+        let slices = 5;
+        let width = (z1 - z0) / slices as f64;
+        let mut disks = Vec::with_capacity(slices + 1);
+        disks.push(Disk {
+            name: "tool_holder".into(),
+            position_m: NOSE_POSITION_M,
+            mass_kg: 0.45,
+            polar_inertia_kg_m2: 1.2e-4,
+            diametral_inertia_kg_m2: 4.0e-4,
+        });
+        for i in 0..slices {
+            disks.push(Disk::hollow_cylinder(
+                format!("rotor_core_{i}"),
+                z0 + width * (i as f64 + 0.5),
+                self.core_outer_diameter_m,
+                self.core_inner_diameter_m,
+                width,
+                7600.0,
+            )?);
+        }
+        Ok(disks)
+    }
+
+    /// Centre of the rotor core \[m\] (a mesh node: the middle slice).
+    pub fn core_centre_m(&self) -> f64 {
+        0.5 * (self.core_span_m.0 + self.core_span_m.1)
+    }
+
+    /// The rotor on one bearing model per pair (row names `front_A` ...).
+    pub fn spindle_with_bearings(
+        &self,
+        front: Arc<dyn BearingModel>,
+        rear: Arc<dyn BearingModel>,
+        p: &SpindleParameters,
+    ) -> Result<RotorSpec> {
+        self.rotor_spec(["front_A", "front_B", "rear_A", "rear_B"], front, rear, p)
+    }
+
+    fn rotor_spec(
+        &self,
+        names: [&str; 4],
+        front: Arc<dyn BearingModel>,
+        rear: Arc<dyn BearingModel>,
+        p: &SpindleParameters,
+    ) -> Result<RotorSpec> {
+        crate::error::positive("air_gap_m", self.air_gap_m)?;
+        let (z0, z1) = self.core_span_m;
+        let bearings = vec![
+            BearingSupport::new(names[0], self.front_rows_m[0], front.clone()),
+            BearingSupport::new(names[1], self.front_rows_m[1], front),
+            BearingSupport::new(names[2], self.rear_rows_m[0], rear.clone()),
+            BearingSupport::new(names[3], self.rear_rows_m[1], rear),
+        ];
+        Ok(RotorSpec {
+            sections: self.shaft()?,
+            disks: self.disks()?,
+            bearings,
+            magnetic_pull: Some(UnbalancedMagneticPull {
+                enabled: p.magnetic_pull_enabled,
+                position_m: self.core_centre_m(),
+                rotor_radius_m: self.core_outer_diameter_m / 2.0,
+                core_length_m: z1 - z0,
+                air_gap_m: self.air_gap_m,
+                flux_density_t: p.flux_density_t,
+                static_eccentricity_m: p.static_eccentricity_m,
+                reduction_factor: 1.0,
+            }),
+            modal_damping_ratio: p.modal_damping_ratio,
+            max_element_length_m: p.max_element_length_m,
+        })
+    }
+}
+
 /// Shaft steps of the assumed seed B spindle shaft (module doc).
 pub fn seed_b_shaft() -> Result<Vec<ShaftSection>> {
-    let s = Material::shaft_steel();
-    let bore = 0.016;
-    [
-        (0.020, 0.060, 0.030),
-        (0.055, 0.045, bore),
-        (0.030, 0.050, bore),
-        (0.130, 0.050, bore),
-        (0.040, 0.045, bore),
-        (0.045, 0.040, bore),
-        (0.020, 0.035, bore),
-    ]
-    .iter()
-    .map(|&(l, d, di)| ShaftSection::new(l, d, di, s.clone()))
-    .collect()
+    SpindleRotorGeometry::seed_b().shaft()
 }
 
 /// Rotor core slices and the tool holder (module doc).
 pub fn seed_b_disks() -> Result<Vec<Disk>> {
-    let (z0, z1) = ROTOR_CORE_SPAN_M;
-    let slices = 5;
-    let width = (z1 - z0) / slices as f64;
-    let mut disks = Vec::with_capacity(slices + 1);
-    disks.push(Disk {
-        name: "tool_holder".into(),
-        position_m: NOSE_POSITION_M,
-        mass_kg: 0.45,
-        polar_inertia_kg_m2: 1.2e-4,
-        diametral_inertia_kg_m2: 4.0e-4,
-    });
-    for i in 0..slices {
-        disks.push(Disk::hollow_cylinder(
-            format!("rotor_core_{i}"),
-            z0 + width * (i as f64 + 0.5),
-            ROTOR_CORE_OUTER_DIAMETER_M,
-            0.050,
-            width,
-            7600.0,
-        )?);
-    }
-    Ok(disks)
+    SpindleRotorGeometry::seed_b().disks()
 }
 
 /// The seed B spindle with constant placeholder bearings.
@@ -170,30 +266,12 @@ pub fn seed_b_spindle_with_bearings(
     rear: Arc<dyn BearingModel>,
     p: &SpindleParameters,
 ) -> Result<RotorSpec> {
-    let (z0, z1) = ROTOR_CORE_SPAN_M;
-    let bearings = vec![
-        BearingSupport::new("7009C_front_A", FRONT_BEARING_POSITIONS_M[0], front.clone()),
-        BearingSupport::new("7009C_front_B", FRONT_BEARING_POSITIONS_M[1], front),
-        BearingSupport::new("7008C_rear_A", REAR_BEARING_POSITIONS_M[0], rear.clone()),
-        BearingSupport::new("7008C_rear_B", REAR_BEARING_POSITIONS_M[1], rear),
-    ];
-    Ok(RotorSpec {
-        sections: seed_b_shaft()?,
-        disks: seed_b_disks()?,
-        bearings,
-        magnetic_pull: Some(UnbalancedMagneticPull {
-            enabled: p.magnetic_pull_enabled,
-            position_m: 0.5 * (z0 + z1),
-            rotor_radius_m: ROTOR_CORE_OUTER_DIAMETER_M / 2.0,
-            core_length_m: z1 - z0,
-            air_gap_m: AIR_GAP_M,
-            flux_density_t: p.flux_density_t,
-            static_eccentricity_m: p.static_eccentricity_m,
-            reduction_factor: 1.0,
-        }),
-        modal_damping_ratio: p.modal_damping_ratio,
-        max_element_length_m: p.max_element_length_m,
-    })
+    SpindleRotorGeometry::seed_b().rotor_spec(
+        ["7009C_front_A", "7009C_front_B", "7008C_rear_A", "7008C_rear_B"],
+        front,
+        rear,
+        p,
+    )
 }
 
 #[cfg(test)]
@@ -222,5 +300,47 @@ mod tests {
         let at = &d.points[1].modes;
         assert_eq!(at[0].whirl, Whirl::Backward);
         assert!(at.iter().any(|m| m.whirl == Whirl::Forward));
+    }
+
+    fn first_mode_hz(g: &SpindleRotorGeometry) -> f64 {
+        let k: Arc<dyn BearingModel> = Arc::new(BearingCoefficients::diagonal(1e8, 2.5e7, 0.0, 0.0).unwrap());
+        let r = Rotor::new(
+            g.spindle_with_bearings(k.clone(), k, &SpindleParameters::default())
+                .unwrap(),
+        )
+        .unwrap();
+        let opts = CampbellOptions {
+            reduced_modes: Some(16),
+            ..CampbellOptions::default()
+        };
+        campbell(&r, &[0.0], &opts).unwrap().points[0].modes[0].frequency_hz
+    }
+
+    #[test]
+    fn seed_geometry_gives_the_seed_rotor_bit_for_bit() {
+        let p = SpindleParameters::default();
+        let k: Arc<dyn BearingModel> = Arc::new(BearingCoefficients::diagonal(1e8, 2.5e7, 0.0, 0.0).unwrap());
+        let a = Rotor::new(seed_b_spindle(&p).unwrap()).unwrap();
+        let b = Rotor::new(
+            SpindleRotorGeometry::seed_b()
+                .spindle_with_bearings(k.clone(), k, &p)
+                .unwrap(),
+        )
+        .unwrap();
+        assert_eq!(a.matrices(12_000.0).unwrap(), b.matrices(12_000.0).unwrap());
+    }
+
+    #[test]
+    fn longer_span_and_heavier_core_lower_the_first_mode() {
+        let seed = SpindleRotorGeometry::seed_b();
+        let f0 = first_mode_hz(&seed);
+        // Rear pair and shaft end 40 mm further back: a longer span.
+        let mut long = seed.clone();
+        long.sections_m[4].0 += 0.040;
+        long.rear_rows_m = [seed.rear_rows_m[0] + 0.040, seed.rear_rows_m[1] + 0.040];
+        let mut heavy = seed.clone();
+        heavy.core_outer_diameter_m = 0.090;
+        let (fl, fh) = (first_mode_hz(&long), first_mode_hz(&heavy));
+        assert!(fl < f0 && fh < f0, "{f0} {fl} {fh}");
     }
 }

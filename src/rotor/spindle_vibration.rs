@@ -15,10 +15,7 @@ use std::sync::Arc;
 use nalgebra::DVector;
 
 use super::modal::{campbell, CampbellDiagram, CampbellOptions, CriticalSpeed};
-use super::presets::{
-    seed_b_spindle_with_bearings, SpindleParameters, FRONT_BEARING_POSITIONS_M, MAX_SPEED_RPM, NOSE_POSITION_M,
-    REAR_BEARING_POSITIONS_M, ROTOR_CORE_SPAN_M,
-};
+use super::presets::{SpindleParameters, SpindleRotorGeometry, MAX_SPEED_RPM, NOSE_POSITION_M};
 use super::response::{harmonic_solution, static_deflection, unbalance_phasor, Unbalance};
 use super::spectrum::{amplitude_spectrum, order_amplitudes, peak, rms};
 use super::spindle_bearings::{NonlinearBearingForces, OffsetTable, PreloadedRow, SpindleRow};
@@ -56,6 +53,21 @@ pub struct SpindleVibrationConfig {
     pub front_offsets: Option<OffsetTable>,
     /// Thermal raceway offsets of the rear (7008C) pair against speed (None: uncoupled).
     pub rear_offsets: Option<OffsetTable>,
+    /// A spindle's own rotor and bearings (None: the seed B rotor on the
+    /// `material` rows).
+    pub rotor: Option<CustomRotor>,
+}
+
+/// A spindle rotor laid out from the spindle's own description, on its own
+/// bearings (the B row of each pair mirrored: back-to-back pairs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CustomRotor {
+    /// Shaft, rows and rotor core.
+    pub geometry: SpindleRotorGeometry,
+    /// The bearing of each front row.
+    pub front_bearing: Bearing,
+    /// The bearing of each rear row.
+    pub rear_bearing: Bearing,
 }
 
 impl SpindleVibrationConfig {
@@ -68,6 +80,7 @@ impl SpindleVibrationConfig {
             effects: EffectSet::all().without(Effect::UnbalancedMagneticPull),
             front_offsets: None,
             rear_offsets: None,
+            rotor: None,
         }
     }
 }
@@ -114,6 +127,7 @@ pub struct TimeVibration {
 /// The seed B spindle on solver-based rows.
 pub struct SpindleVibration {
     config: SpindleVibrationConfig,
+    geometry: SpindleRotorGeometry,
     rotor: Rotor,
     rows: Vec<(f64, SpindleRow)>,
 }
@@ -130,72 +144,77 @@ pub fn spindle_campbell_options(modes: usize) -> CampbellOptions {
 }
 
 impl SpindleVibration {
-    /// Build the rotor with the four rows (front A/B 7009C, rear A/B 7008C;
-    /// the B rows mirrored: back-to-back pairs).
+    /// Build the rotor with the four rows (seed: front A/B 7009C, rear A/B
+    /// 7008C; or the spindle's own rotor and bearings; the B rows mirrored:
+    /// back-to-back pairs).
     pub fn new(config: SpindleVibrationConfig) -> Result<Self> {
-        let suffix = match config.material {
-            RowMaterial::Steel => "",
-            RowMaterial::Hybrid => "-hybrid",
-        };
         let opts = SolveOptions {
             effects: config.effects,
             ..SolveOptions::default()
         };
+        let (geometry, front_bearing, rear_bearing) = match &config.rotor {
+            Some(c) => (c.geometry.clone(), c.front_bearing.clone(), c.rear_bearing.clone()),
+            None => {
+                let suffix = match config.material {
+                    RowMaterial::Steel => "",
+                    RowMaterial::Hybrid => "-hybrid",
+                };
+                (
+                    SpindleRotorGeometry::seed_b(),
+                    Bearing::preset(&format!("7009C{suffix}"))?,
+                    Bearing::preset(&format!("7008C{suffix}"))?,
+                )
+            }
+        };
         let front = Arc::new(PreloadedRow::new(
-            &Bearing::preset(&format!("7009C{suffix}"))?,
+            &front_bearing,
             config.preload_n,
             opts,
             config.front_offsets.clone(),
         )?);
         let rear = Arc::new(PreloadedRow::new(
-            &Bearing::preset(&format!("7008C{suffix}"))?,
+            &rear_bearing,
             config.preload_n,
             opts,
             config.rear_offsets.clone(),
         )?);
+        let row = |z: f64, r: &Arc<PreloadedRow>, mirrored: bool| {
+            (
+                z,
+                SpindleRow {
+                    row: r.clone(),
+                    mirrored,
+                },
+            )
+        };
         let rows = vec![
-            (
-                FRONT_BEARING_POSITIONS_M[0],
-                SpindleRow {
-                    row: front.clone(),
-                    mirrored: false,
-                },
-            ),
-            (
-                FRONT_BEARING_POSITIONS_M[1],
-                SpindleRow {
-                    row: front,
-                    mirrored: true,
-                },
-            ),
-            (
-                REAR_BEARING_POSITIONS_M[0],
-                SpindleRow {
-                    row: rear.clone(),
-                    mirrored: false,
-                },
-            ),
-            (
-                REAR_BEARING_POSITIONS_M[1],
-                SpindleRow {
-                    row: rear,
-                    mirrored: true,
-                },
-            ),
+            row(geometry.front_rows_m[0], &front, false),
+            row(geometry.front_rows_m[1], &front, true),
+            row(geometry.rear_rows_m[0], &rear, false),
+            row(geometry.rear_rows_m[1], &rear, true),
         ];
         let parameters = SpindleParameters {
             magnetic_pull_enabled: config.effects.has(Effect::UnbalancedMagneticPull),
             ..config.parameters.clone()
         };
-        // The preset takes one model per pair; replace each support by its own row.
+        // The layout takes one model per pair; replace each support by its own row.
         let placeholder: Arc<dyn SupportModel> = Arc::new(rows[0].1.clone());
-        let mut spec = seed_b_spindle_with_bearings(placeholder.clone(), placeholder, &parameters)?;
+        let mut spec = if config.rotor.is_some() {
+            geometry.spindle_with_bearings(placeholder.clone(), placeholder, &parameters)?
+        } else {
+            super::presets::seed_b_spindle_with_bearings(placeholder.clone(), placeholder, &parameters)?
+        };
         for (b, (z, r)) in spec.bearings.iter_mut().zip(&rows) {
             b.position_m = *z;
             b.model = Arc::new(r.clone());
         }
         let rotor = Rotor::new(spec)?;
-        Ok(SpindleVibration { config, rotor, rows })
+        Ok(SpindleVibration {
+            config,
+            geometry,
+            rotor,
+            rows,
+        })
     }
 
     /// The configuration the model was built from.
@@ -226,8 +245,8 @@ impl SpindleVibration {
 
     /// The residual unbalance at the middle of the rotor core (phase 0).
     pub fn unbalance(&self, spec: UnbalanceSpec) -> Result<Unbalance> {
-        let z = 0.5 * (ROTOR_CORE_SPAN_M.0 + ROTOR_CORE_SPAN_M.1);
-        // 0.17 m: centre slice of the core, a mesh node (presets.rs).
+        // The centre slice of the core, a mesh node (presets.rs).
+        let z = self.geometry.core_centre_m();
         match spec {
             UnbalanceSpec::Grade { grade_mm_per_s } => {
                 Unbalance::from_balance_grade(z, grade_mm_per_s, self.rotor.mass_kg(), MAX_SPEED_RPM, 0.0)

@@ -350,6 +350,7 @@ impl Spindle {
             }
             None => {}
         }
+        super::config_io::check_params(&config.params)?;
         let mut params = config.params.clone();
         let f0 = config.preload.force_n();
         positive("preload_n", f0)?;

@@ -8,6 +8,8 @@
 //!   runaway detection), the transient with quasi-steady mechanics, the
 //!   compensation preload (B Fig. 17), the optimal preload (B Figs. 15-16)
 //!   and speed x preload x load grids across threads.
+//! * [`config_io`]: [`SpindleConfig`] to and from JSON, and the named
+//!   checks of its network and geometry ([`check_params`]).
 //! * [`shaft_loads`]: the pairs' radial loads from the forces on the rigid
 //!   shaft (nose load, static unbalanced magnetic pull [`CoreMagneticPull`]).
 //!
@@ -28,9 +30,11 @@
 pub mod pair;
 
 pub use pair::{BearingPair, PairLoad, PairState, PairWarm, Preload};
+pub mod config_io;
 pub mod coupled;
 pub mod shaft_loads;
 
+pub use config_io::check_params;
 #[allow(deprecated)]
 pub use coupled::DEFAULT_SPIN_FRICTION;
 pub use coupled::{

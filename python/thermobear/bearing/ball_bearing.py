@@ -64,22 +64,33 @@ class Bearing:
 
     def __init__(self, native: Any) -> None:
         self._b = native
+        self._provenance: dict[str, str] = {}
 
     # -- construction -------------------------------------------------
     @classmethod
     def preset(cls, name: str) -> "Bearing":
         """A built-in bearing by its name, one of
-        [`preset_names`][thermobear.Bearing.preset_names]."""
+        [`preset_names`][thermobear.Bearing.preset_names], or a catalogue
+        bearing by its standard designation (``"6208-2RS1"``, ``"7014CE/HCP4A"``,
+        ``"HCB7009C-T-P4S"``; what is read: How-to "Bearings by designation").
+        [`provenance`][thermobear.Bearing.provenance] says where each value
+        comes from."""
+        from . import catalogue
+
         if not isinstance(name, str):
             known = ", ".join(_native.Bearing.preset_names())
             raise v.fail("name", name, f"a bearing preset name (a string): one of {known}")
         try:
-            return cls(_native.Bearing.preset(name))
-        except ConfigError as e:
-            hint = v.did_you_mean(name, _native.Bearing.preset_names())
-            if hint:
-                e.args = (f"{e}{hint}", *e.args[1:])
-            raise
+            b = cls(_native.Bearing.preset(name))
+        except ConfigError:
+            des = catalogue.parse_designation(name)  # a ConfigError with a guess
+            kw, provenance = catalogue.catalogue_geometry(des)
+            build = cls.deep_groove if des.bearing_type == catalogue.DEEP else cls.angular_contact
+            b = build(**kw, name=des.text)
+        else:
+            provenance = catalogue.preset_provenance(name, b.bearing_type)
+        b._provenance = provenance
+        return b
 
     @staticmethod
     def preset_names() -> list[str]:
@@ -190,6 +201,22 @@ class Bearing:
     def geometry(self) -> dict[str, float]:
         """Geometry in mm and degrees."""
         return dict(self._b.geometry())
+
+    @property
+    def provenance(self) -> dict[str, str]:
+        """Where each value of a preset or catalogue bearing comes from:
+        field -> ``"catalogue ISO 15: ..."``, ``"published: <source>"``,
+        ``"estimated: <rule>"``, ``"designation: ..."`` or ``"default: ..."``
+        (empty for a bearing built from dimensions given to a constructor)."""
+        return dict(getattr(self, "_provenance", {}))
+
+    def summary(self) -> str:
+        """The bearing in a few lines: type, materials, dimensions and
+        internal geometry, and a note naming every estimated value."""
+        from .catalogue import summary_lines
+
+        return "\n".join(summary_lines(self.name, self.bearing_type, self.material_class,
+                                       self.geometry, self.provenance))  # fmt: skip
 
     @property
     def ring_material(self) -> Material:

@@ -175,7 +175,13 @@ def _cmd_presets(args: argparse.Namespace) -> int:
     from ..config import seed_config_names
     from ..spindle import Spindle
 
+    if getattr(args, "bearings", False):
+        from ..bearing.catalogue import bearing_family_lines
+
+        print("\n".join(bearing_family_lines()))
+        return EXIT_OK
     print("bearings: " + ", ".join(Bearing.preset_names()))
+    print("bearings by designation: see thermobear presets --bearings")
     print("spindles: " + ", ".join(Spindle.preset_names()))
     print("materials: " + ", ".join(Material.preset_names()))
     print("seed configurations: " + ", ".join(seed_config_names()))
@@ -476,7 +482,11 @@ def build_parser() -> argparse.ArgumentParser:
     s = add("solve", "solve a system description (TOML)", True, _cmd_solve)
     s.add_argument("config", help="path to the .toml system description")
     s.add_argument("--out", default="thermobear-out", help="output folder (default: %(default)s)")
-    add("presets", "list built-in bearings, materials and seeds", False, _cmd_presets)
+    pr = add("presets", "list built-in bearings, materials and seeds", False, _cmd_presets)
+    pr.add_argument(
+        "--bearings", action="store_true",
+        help="list the bearing series read from a designation (6208-2RS1, 7014CE/HCP4A ...)",
+    )  # fmt: skip
     _add_effects(add("effects", "list the named physical effects", False, _cmd_effects))
     _add_diagnose(
         add("diagnose", "name the effect missing between model and measurements", True,

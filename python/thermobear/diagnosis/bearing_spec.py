@@ -66,6 +66,7 @@ class BearingModelSpec(ModelSpec):
         if supply_given(options) and "churning_oil_fraction" not in options:
             self.options["churning_oil_fraction"] = None  # the drag follows the supply
         _check_supply(self.options)
+        _check_numbers(options)
         self._cache: dict = {}
 
     @classmethod
@@ -83,6 +84,7 @@ class BearingModelSpec(ModelSpec):
         _check_option_names(options)
         new.options = {**self.options, **options}
         _check_supply(new.options)
+        _check_numbers(options)
         new._cache = self._cache
         return new
 
@@ -198,6 +200,18 @@ def _check_option_names(options: dict) -> None:
             f"invalid option = {k!r}: known: {', '.join(sorted(_THERMAL_DEFAULTS))}"
             + did_you_mean(k, [*_THERMAL_DEFAULTS, *UNKNOWN_HEAT_OPTIONS])
         )
+
+
+def _check_numbers(options: dict) -> None:
+    """The load scales (global and per level: finite, >= 0) and the unknown
+    heat law (finite) are numbers; a wrong one is named."""
+    from .. import _validate as val
+
+    for k, v in options.items():
+        if k in LOAD_SCALE_OPTIONS or k.split("@", 1)[0] in LOAD_SCALE_OPTIONS:
+            val.real(k, v, 0.0)
+        elif k in UNKNOWN_HEAT_OPTIONS and v is not None:
+            val.real(k, v)
 
 
 def _check_supply(options: dict) -> None:

@@ -576,7 +576,9 @@ class _RotorView:
     def __init__(self, spec: SpindleModelSpec, preload_n: float) -> None:
         self._spec = spec
         self.preload_n = float(preload_n)
-        self.rotor_preset_name = spec.spindle.rotor_preset_name
+        self.rotor_layout = spec.spindle.rotor_layout
+        if self.rotor_layout is None:
+            self.rotor_preset_name = spec.spindle.rotor_preset_name
 
     def raceway_offsets(self, speed_rpm: float) -> dict:
         return self._spec._state(self.preload_n, float(speed_rpm))[1]

@@ -294,7 +294,9 @@ def bearing_count(bearings_per_shaft: Optional[int]) -> int:
 
 def as_speeds(speeds_rpm: ArrayLike) -> np.ndarray:
     """Speeds [rpm] sorted ascending (any given order), distinct and positive."""
-    s = np.asarray(speeds_rpm, dtype=float).ravel()
+    from .. import _validate as val
+
+    s = val.reals("speeds_rpm", speeds_rpm, allow_empty=True)  # numbers, not text
     if s.size == 0:
         raise _config_error("invalid speeds_rpm = []: give at least one speed")
     if not np.all(np.isfinite(s)) or np.any(s <= 0.0):

@@ -10,6 +10,9 @@ Every function takes a ``spindle`` argument, either
   - ``rotor_preset_name: str`` — one of the two preset names above (the
     shaft, rotor core, tool holder and bearing positions of
     ``src/rotor/presets.rs``, every assumed dimension documented there);
+  - or ``rotor_layout: dict`` — the spindle's own rotor (shaft steps, row
+    positions, motor core, bearings), as ``thermobear.Spindle.rotor_layout``
+    lays it out from a described spindle (None: use ``rotor_preset_name``);
   - optional ``preload_n: float`` — axial preload of each pair [N] (400 N);
   - optional ``raceway_offsets(speed_rpm: float) -> dict`` returning
     ``{"front": (radial_m, axial_m), "rear": (radial_m, axial_m)}``: the

@@ -11,7 +11,7 @@ from numpy.typing import ArrayLike
 from .. import _native
 from .. import _validate as val
 from .._model_hook import takes_calibrated
-from .supports import _effects, _offsets, _resolve, _speeds
+from .supports import _effects, _offsets, _resolve, _rotor, _speeds
 
 if TYPE_CHECKING:
     import polars
@@ -52,6 +52,7 @@ def campbell(
         modes=val.whole("modes", modes, 1, MAX_MODES),
         effects=_effects(effects),
         offsets=_offsets(spindle, s, val.flag("coupled", coupled)),
+        rotor=_rotor(spindle),
         progress=progress,
     )
     return pl.DataFrame(d)
@@ -85,5 +86,6 @@ def critical_speeds(
         harmonic=val.real("harmonic", harmonic, 0.0, open_lo=True),
         effects=_effects(effects),
         offsets=_offsets(spindle, s, val.flag("coupled", coupled)),
+        rotor=_rotor(spindle),
     )
     return pl.DataFrame(d)

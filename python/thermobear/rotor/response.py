@@ -14,7 +14,7 @@ from .._model_hook import takes_calibrated
 from .._partial import speed_frames
 from .._types import ResponseMethod, VibrationModel
 from ..errors import ThermobearError
-from .supports import _effects, _offsets, _resolve, _speeds, _time_record
+from .supports import _effects, _offsets, _resolve, _rotor, _speeds, _time_record
 
 if TYPE_CHECKING:
     import polars
@@ -90,6 +90,7 @@ def vibration(
             duration_s=duration_s,
             effects=_effects(effects),
             offsets=_offsets(spindle, s, coupled),
+            rotor=_rotor(spindle),
             progress=progress,
         )
     except ThermobearError as e:
@@ -179,6 +180,7 @@ def _spectrum_native(
         unbalance_g_mm=g_mm,
         effects=_effects(effects),
         offsets=_offsets(spindle, np.array([n]), val.flag("coupled", coupled)),
+        rotor=_rotor(spindle),
     )
 
 

@@ -22,10 +22,20 @@ SPINDLE_PRESETS: dict[str, str] = {
 _DEFAULT_PRELOAD_N = 400.0
 
 
+def _rotor(spindle: Any) -> Optional[dict[str, Any]]:
+    """The spindle's own rotor (its ``rotor_layout``), None: a seed rotor."""
+    return None if isinstance(spindle, str) else getattr(spindle, "rotor_layout", None)
+
+
 def _resolve(spindle: Any) -> tuple[str, float, Optional[Callable[[float], dict[str, Any]]]]:
-    """(row material, preload [N], offsets provider or None)."""
+    """(row material, preload [N], offsets provider or None); the material
+    is not used by a spindle with its own rotor (``_rotor``)."""
     if isinstance(spindle, str):
         name, preload, provider = spindle, _DEFAULT_PRELOAD_N, None
+    elif _rotor(spindle) is not None:
+        name = "seed-steel-spindle"
+        preload = val.real("preload_n", getattr(spindle, "preload_n", _DEFAULT_PRELOAD_N), 0.0)
+        provider = getattr(spindle, "raceway_offsets", None)
     else:
         preset = getattr(spindle, "rotor_preset_name", None)
         if preset is None:

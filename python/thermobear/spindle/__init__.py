@@ -11,11 +11,31 @@ released (Ctrl-C works, ``progress(done, total)`` is called between chunks).
 """
 
 from .operation import compensation_preload, optimal_preload, spindle_grid, transient
+from .parts import (
+    BearingSet,
+    Cooling,
+    Housing,
+    Lubrication,
+    MagneticPull,
+    Motor,
+    Preload,
+    Shaft,
+    ToolLoad,
+)
 from .spindle import SEED_B_SPRING_RATE_N_PER_UM, Spindle
 
 __all__ = [
     "SEED_B_SPRING_RATE_N_PER_UM",
+    "BearingSet",
+    "Cooling",
+    "Housing",
+    "Lubrication",
+    "MagneticPull",
+    "Motor",
+    "Preload",
+    "Shaft",
     "Spindle",
+    "ToolLoad",
     "compensation_preload",
     "optimal_preload",
     "spindle_grid",

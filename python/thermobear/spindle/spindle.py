@@ -3,6 +3,7 @@ thermal steady state; the table rows of a solved state."""
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any, Optional, Sequence
 
 import numpy as np
@@ -13,17 +14,74 @@ from .._deprecation import renamed_kwargs, warn_renamed
 from .._names import spindle_node, temperature_column
 from .._types import PreloadKind
 from ..thermal.oil_supply import SUPPLY_OPTIONS
+from .parts import Cooling, Housing, Lubrication, Motor, Preload, Shaft, ToolLoad
 
 #: Spring rate implied by seed B Fig. 17: 6.45 N / 17.92 um.
 SEED_B_SPRING_RATE_N_PER_UM = 6.45 / 17.92
 
 
 class Spindle:
-    """A motorized spindle. Build with [`preset`][thermobear.Spindle.preset], change settings with
+    """A motorized spindle. Build with [`preset`][thermobear.Spindle.preset], from its parts
+    (``Spindle(shaft=Shaft(...), front=BearingSet("7009C-hybrid"), ...)``, every part
+    left out takes the ``seed-ceramic-spindle`` values) or from a description file with
+    [`from_toml`][thermobear.Spindle.from_toml]; change settings with
     [`with_options`][thermobear.Spindle.with_options] (returns a new spindle)."""
 
-    def __init__(self, native: Any) -> None:
+    def __init__(
+        self,
+        native: Any = None,
+        *,
+        name: Optional[str] = None,
+        shaft: Optional[Shaft] = None,
+        front: Any = None,
+        rear: Any = None,
+        preload: Optional[Preload] = None,
+        housing: Optional[Housing] = None,
+        motor: Optional[Motor] = None,
+        cooling: Optional[Cooling] = None,
+        lubrication: Optional[Lubrication] = None,
+        tool: Optional[ToolLoad] = None,
+        effects: Optional[Sequence[str]] = None,
+    ) -> None:
+        parts = (name, shaft, front, rear, preload, housing, motor, cooling, lubrication, tool)
+        if native is not None and any(p is not None for p in (*parts, effects)):
+            raise val.fail("native", native, "None when the parts are given")
+        if native is None:
+            from .description import build_native
+
+            native = build_native(
+                name, front, rear, effects, shaft=shaft, preload=preload, housing=housing,
+                motor=motor, cooling=cooling, lubrication=lubrication, tool=tool,
+            )  # fmt: skip
+            _check_preset_name(native)
         self._native = native
+
+    @staticmethod
+    def from_toml(source: str | Path) -> "Spindle":
+        """A spindle from a ``[spindle]`` description: a file path, TOML text or
+        the name of a preset (its shipped file). An error names the file,
+        the line and the key."""
+        from ..config import located_config_errors
+        from .description import parse_description, read_description
+
+        path, text = read_description(source)
+        with located_config_errors(path, text):
+            return Spindle(**parse_description(text))
+
+    def to_toml(self) -> str:
+        """The ``[spindle]`` description file of this spindle (every value
+        written; ``from_toml`` of it gives this spindle to the last bit)."""
+        from .description import to_toml
+
+        return to_toml(self._native)
+
+    @property
+    def parts(self) -> dict[str, Any]:
+        """The description of this spindle: the keywords of ``Spindle(...)``
+        (``name``, ``shaft``, ``front``, ``rear``, ``preload`` ...)."""
+        from .description import describe
+
+        return describe(self._native)
 
     @staticmethod
     def preset(name: str) -> "Spindle":
@@ -246,9 +304,24 @@ class Spindle:
         name = self.name
         if name not in ("seed-ceramic-spindle", "seed-steel-spindle"):
             raise ConfigError(
-                f"invalid spindle = {name!r}: the rotor model has hybrid and steel rows only"
+                f"invalid spindle = {name!r}: the seed rotor model has hybrid and steel "
+                "rows only; this spindle's own rotor is rotor_layout"
             )
         return name
+
+    @property
+    def rotor_layout(self) -> Optional[dict[str, Any]]:
+        """The rotor of this spindle laid out from its own shaft, bearing and
+        motor dimensions (see ``thermobear.spindle.rotor_layout``), or None for
+        the two seed presets and their variants (``with_options``,
+        ``with_dimensions``), which keep the seed rotor
+        (``src/rotor/presets.rs``). A described spindle may carry a preset's
+        name only with that preset's shaft, bearings and motor."""
+        from .rotor_layout import rotor_layout
+
+        if self.name in _SEED_ROTORS:  # the preset, or a variant of it (with_dimensions)
+            return None
+        return rotor_layout(self._native)
 
     def raceway_offsets(self, speed_rpm: float) -> dict[str, tuple[float, float]]:
         """Thermal groove-centre offsets ``(radial_m, axial_m)`` of the front
@@ -290,11 +363,11 @@ class Spindle:
         speed = val.real("speed_rpm", speed_rpm, 0.0)
         ndm = self.__dict__.get("_ndm")
         if ndm is None:
-            from ..bearing import Bearing
+            import json
 
-            a = self.assumptions
-            pitch = Bearing.preset(str(a["front_bearing"])).geometry["pitch_diameter_mm"]
-            ndm = self.__dict__["_ndm"] = (pitch, a.get("lubrication"))
+            geometry = json.loads(self._native.config_json())["params"]["front_bearing"]["geometry"]
+            pitch = geometry["pitch_diameter_m"] * 1e3
+            ndm = self.__dict__["_ndm"] = (pitch, self.assumptions.get("lubrication"))
         plausibility.check_speed(speed, *ndm)
         return speed
 
@@ -438,3 +511,26 @@ def _rows_frame(rows: list[Any], errors: list[Any]) -> Any:
         "error": pl.Series("error", [e[2] for e in errors], dtype=pl.String),
     }
     return pl.DataFrame({**data, **report}, strict=False)
+
+
+#: The presets whose rotor is the seed rotor (``src/rotor/presets.rs``).
+_SEED_ROTORS = ("seed-ceramic-spindle", "seed-steel-spindle")
+
+
+def _check_preset_name(native: Any) -> None:
+    """A described spindle named like a preset has the preset's shaft,
+    bearings and motor (the rotor model goes by that name); else a
+    ConfigError asking for a name of its own."""
+    from .description import describe
+
+    name = str(native.name)
+    if name not in _native.Spindle.preset_names():
+        return
+    mine, theirs = describe(native), describe(_native.Spindle.preset(name))
+    differ = [k for k in ("shaft", "front", "rear", "motor") if mine.get(k) != theirs.get(k)]
+    if differ:
+        raise val.fail(
+            "name", name,
+            f"a name of your own: {name!r} is a preset's, and this spindle's "
+            f"{', '.join(differ)} differ from it",
+        )  # fmt: skip
