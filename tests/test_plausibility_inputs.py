@@ -280,3 +280,22 @@ def test_every_input_limit_is_on_the_limits_page():
     assert checks.MAX_GEAR_UNIT_LOAD_N_PER_MM2 == 650.0 and "above 650 N/mm²" in page
     assert checks.coarsest_pitch_deviation_um(1.537, 140.16) == pytest.approx(66.5, abs=0.5)
     assert np.isclose(checks.POUR_POINT_MARGIN_K, 10.0) and "within 10 K" in page
+
+
+@pytest.mark.parametrize("call", ["thermal_state", "thermal_state_many", "stiffness_curve"])
+def test_the_batch_paths_apply_the_supply_rules_too(b7008, call):
+    """The same supply rule on every thermal path: a jet without oil warns
+    from the single state, the batch and the thermal stiffness curve; a
+    plausible jet does not."""
+    runs = {
+        "thermal_state": lambda **kw: tb.thermal_state(b7008, 8000.0, 500.0, **kw),
+        "thermal_state_many": lambda **kw: tb.thermal_state_many(
+            b7008, {"speed_rpm": [6000.0, 8000.0], "axial_n": 500.0}, **kw
+        ),
+        "stiffness_curve": lambda **kw: tb.stiffness_curve(
+            b7008, [6000.0, 8000.0], 500.0, mode="thermal", **kw
+        ),
+    }
+    with pytest.warns(tb.PlausibilityWarning, match="oil_flow_cm3_per_min"):
+        runs[call](lubrication="jet", oil_flow_cm3_per_min=0.0)
+    _quiet(lambda: runs[call](lubrication="jet", oil_flow_cm3_per_min=500.0))

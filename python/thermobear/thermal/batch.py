@@ -5,8 +5,11 @@ from __future__ import annotations
 import functools
 from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence, TypeVar
 
-from .. import _native
+import numpy as np
+
+from .. import _native, plausibility
 from .._deprecation import renamed_kwargs
+from .._input_checks import check_supply
 from .._limits import cap_threads
 from .._model_hook import (
     LOAD_SCALES,
@@ -136,6 +139,11 @@ def thermal_state_many(
         extra_heat_w, housing_conductance_scale, churning_oil_fraction,
         heat_model=heat_model, lubrication=lubrication, **heat,
     )  # fmt: skip
+    speed = _speed_and_loads(frame)[0]
+    top = float(np.nanmax(speed)) if speed.size and np.isfinite(speed).any() else 0.0
+    check_supply(
+        plausibility._geometry(bearing), options["lubrication"], options["oil_supply"], top
+    )
     if has_heat_law(law):
         return join_inputs(frame, _with_heat_law(bearing, frame, effects, options, law, threads))
     raw = _native.thermal_state_many(

@@ -15,6 +15,7 @@ from numpy.typing import ArrayLike
 from .. import _native, plausibility
 from .. import _validate as val
 from .._deprecation import renamed_kwargs
+from .._input_checks import check_supply
 from .._model_hook import takes_calibrated
 from .._names import renamed_columns
 from .._partial import speed_frames
@@ -246,6 +247,10 @@ def thermal_stiffness_curve(
     )
     plausibility.check_misalignment(settings["misalignment_rad"], plausibility._geometry(bearing))
     plausibility.check_speeds(speeds, bearing._pitch_mm(), settings["lubrication"])
+    top = float(speeds.max()) if speeds.size else 0.0
+    check_supply(
+        plausibility._geometry(bearing), settings["lubrication"], settings["oil_supply"], top
+    )
 
     def frame(cols: Any, at: Any) -> polars.DataFrame:
         df = pl.DataFrame(renamed_columns(dict(cols)))
