@@ -70,7 +70,7 @@ class Bearing:
     @classmethod
     def preset(cls, name: str) -> "Bearing":
         """A built-in bearing by its name, one of
-        [`preset_names`][thermobear.Bearing.preset_names], or a catalogue
+        `Bearing.preset_names()`, or a catalogue
         bearing by its standard designation (``"6208-2RS1"``, ``"7014CE/HCP4A"``,
         ``"HCB7009C-T-P4S"``; what is read: How-to "Bearings by designation").
         [`provenance`][thermobear.Bearing.provenance] says where each value
