@@ -533,27 +533,19 @@ def check_machine(machine: str, native: Any, where: str = "") -> None:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
+            common: dict[str, Any] = dict(
+                ball_count=whole("ball_count", g["ball_count"], 1),
+                ball_diameter_mm=g["ball_diameter_mm"], pitch_diameter_mm=g["pitch_diameter_mm"],
+                inner_conformity=g["inner_conformity"], outer_conformity=g["outer_conformity"],
+                bore_mm=g["bore_mm"], outer_diameter_mm=g["outer_diameter_mm"],
+                width_mm=g["width_mm"], ring_material=b.ring_material,
+                ball_material=b.ball_material, name=b.name,
+            )  # fmt: skip
             if b.bearing_type == "deep-groove":
-                Bearing.deep_groove(
-                    ball_count=whole("ball_count", g["ball_count"], 1),
-                    ball_diameter_mm=g["ball_diameter_mm"],
-                    pitch_diameter_mm=g["pitch_diameter_mm"],
-                    inner_conformity=g["inner_conformity"],
-                    outer_conformity=g["outer_conformity"],
-                    diametral_clearance_mm=g["diametral_clearance_mm"], bore_mm=g["bore_mm"],
-                    outer_diameter_mm=g["outer_diameter_mm"], width_mm=g["width_mm"],
-                    ring_material=b.ring_material, ball_material=b.ball_material, name=b.name,
-                )  # fmt: skip
+                Bearing.deep_groove(**common, diametral_clearance_mm=g["diametral_clearance_mm"])
             else:
                 Bearing.angular_contact(
-                    ball_count=whole("ball_count", g["ball_count"], 1),
-                    ball_diameter_mm=g["ball_diameter_mm"],
-                    pitch_diameter_mm=g["pitch_diameter_mm"],
-                    inner_conformity=g["inner_conformity"],
-                    outer_conformity=g["outer_conformity"],
-                    free_contact_angle_deg=g["free_contact_angle_deg"], bore_mm=g["bore_mm"],
-                    outer_diameter_mm=g["outer_diameter_mm"], width_mm=g["width_mm"],
-                    ring_material=b.ring_material, ball_material=b.ball_material, name=b.name,
-                )  # fmt: skip
+                    **common, free_contact_angle_deg=g["free_contact_angle_deg"]
+                )
     except ConfigError as e:
         raise ConfigError(f"invalid {where}base.state: the saved bearing: {e}") from None
