@@ -335,8 +335,8 @@ def test_joint_calibration_says_what_the_data_do_not_identify():
 
 def test_joint_calibration_checks_its_input():
     m = measured(BASE, conditions(SPEEDS), 0)
-    with pytest.raises(tb.ConfigError, match="1 to 3"):
-        tb.calibrate([(BASE, m)], ["extra_heat_w", "drag_coefficient", "a", "b"])
+    with pytest.raises(tb.ConfigError, match="1 to 4"):
+        tb.calibrate([(BASE, m)], ["extra_heat_w", "drag_coefficient", "a", "b", "c"])
     with pytest.raises(tb.ConfigError, match="not a calibratable"):
         tb.calibrate([(BASE, m)], ["centrifugal"])
     with pytest.raises(tb.ConfigError, match="per_set"):

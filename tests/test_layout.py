@@ -28,6 +28,7 @@ LAYERS: list[tuple[str, ...]] = [
         "thermobear._optional",
         "thermobear._limits",
         "thermobear._validate",
+        "thermobear._toml_text",
         "thermobear.plausibility",
         "thermobear._input_checks",
         "thermobear._types",

@@ -145,18 +145,22 @@ def test_tables2_3_parameters(demo: Path) -> None:
 
 
 def test_fig03_temperature_field(demo: Path) -> None:
-    """Balls hottest of the bearing parts, front above rear, stator below
-    rotor, the sleeve by the cooling jacket the coolest; as in seed B the
-    front balls are the hottest node of the spindle (the fitted heat puts the
-    bearing friction above the motor losses)."""
+    """Balls hottest of the bearing parts, stator below rotor, the sleeve by
+    the cooling jacket the coolest; as in seed B the balls are the hottest
+    nodes of the spindle (the fitted heat puts the bearing friction above
+    the motor losses). Seed B has the front bearing above the rear; with
+    the load friction its Fig. 6 asks for, the smaller rear bearing makes
+    nearly the front's heat: the front outer ring stays above the rear, the
+    balls of both sets come within 1 K (the row's reason)."""
     f = _read(demo, "seed_b_fig03_temperature_field")
     t = dict(zip(f["node"], f["temperature_c"], strict=True))
     for side in ("front", "rear"):
         assert t[f"{side}_ball"] > t[f"{side}_inner_ring"] > t[f"{side}_outer_ring"]
-    assert t["front_ball"] > t["rear_ball"]
+    assert t["front_outer_ring"] > t["rear_outer_ring"]
+    assert abs(t["front_ball"] - t["rear_ball"]) < 1.0
     assert t["stator"] < t["rotor"]
     assert min(t.values()) == t["sleeve"]
-    assert max(t.values()) == t["front_ball"]
+    assert max(t.values()) == max(t["front_ball"], t["rear_ball"])
     state = _read(demo, "seed_b_steady_vs_speed").filter(pl.col("speed_rpm") == 12000.0)
     assert t["rotor"] == pytest.approx(float(state["rotor_temperature_c"][0]), abs=0.0)
 
@@ -164,7 +168,8 @@ def test_fig03_temperature_field(demo: Path) -> None:
 def test_fig04_transient(demo: Path) -> None:
     """Temperatures rise ever more slowly; near-steady after 5-25 min
     (seed B: about 21 min; ours about 9 min, the row's reason); the rear
-    bearing follows below the front."""
+    outer ring follows below the front, the rear balls and inner ring
+    within 1 K of the front's (Fig. 3's reason)."""
     tr = _read(demo, "seed_b_transient_12000rpm")
     t = tr["time_s"].to_numpy() / 60.0
     for side in ("front", "rear"):
@@ -175,17 +180,19 @@ def test_fig04_transient(demo: Path) -> None:
         t95 = t[np.argmax(rise >= 0.95)]
         assert 5.0 <= t95 <= 25.0, (side, t95)
         assert (v[np.argmax(t >= 5.0)] - v[0]) > 0.5 * (v[-1] - v[0])  # slowing rise
-    for part in ("ball", "inner_ring", "outer_ring"):
-        end = tr.row(-1, named=True)
-        assert end[f"front_{part}_temperature_c"] > end[f"rear_{part}_temperature_c"]
+    end = tr.row(-1, named=True)
+    assert end["front_outer_ring_temperature_c"] > end["rear_outer_ring_temperature_c"]
+    for part in ("ball", "inner_ring"):
+        assert abs(end[f"front_{part}_temperature_c"] - end[f"rear_{part}_temperature_c"]) < 1.0
 
 
 def test_fig05_temperatures_vs_speed(demo: Path) -> None:
-    """Ball > inner > outer ring, front > rear with a gap that grows with
-    speed; at 18,000 rpm the front inner ring within seed B's 3 K of its 49.8 C,
-    the ball above its 64.8 C and the outer ring below its 38.9 C, each by
-    less than 6 K: the heat fitted to these and Fig. 6's 500 N ball cannot
-    meet all four (the row's reason)."""
+    """Ball > inner > outer ring; the front outer ring above the rear with a
+    gap that grows with speed, the balls of both sets within 0.5 K (seed B:
+    front above rear, Fig. 3's reason); at 18,000 rpm the front inner ring
+    and ball within seed B's 3 K of its 49.8 and 64.8 C, the outer ring
+    below its 38.9 C by less than 6 K: the heat fitted to these and Fig. 6's
+    500 N ball cannot meet all four (the row's reason)."""
     s = _read(demo, "seed_b_steady_vs_speed").sort("speed_rpm")
     for side in ("front", "rear"):
         b, i, o = (
@@ -195,25 +202,29 @@ def test_fig05_temperatures_vs_speed(demo: Path) -> None:
         assert np.all((b > i)[1:]) and (side == "rear" or b[0] > i[0])  # rear: from 12,000 rpm
         assert np.all(np.diff(b) > 0) and np.all(np.diff(o) > 0)
         assert (b - i)[-1] > (b - i)[0]
-    gap = s["front_ball_temperature_c"].to_numpy() - s["rear_ball_temperature_c"].to_numpy()
+    gap = s["front_outer_ring_temperature_c"].to_numpy()
+    gap = gap - s["rear_outer_ring_temperature_c"].to_numpy()
     assert np.all(gap > 0) and gap[-1] > gap[0]
+    balls = s["front_ball_temperature_c"].to_numpy() - s["rear_ball_temperature_c"].to_numpy()
+    assert np.all(np.abs(balls) < 0.5)
     hi = s.row(-1, named=True)
     assert hi["front_inner_ring_temperature_c"] == pytest.approx(49.8, abs=3.0)
-    assert 0.0 < hi["front_ball_temperature_c"] - 64.8 < 6.0
+    assert hi["front_ball_temperature_c"] == pytest.approx(64.8, abs=3.0)
     assert 0.0 < 38.9 - hi["front_outer_ring_temperature_c"] < 6.0
 
 
 def test_fig06_ball_temperature_vs_preload(mech: pl.DataFrame) -> None:
     """Ball temperature rises with preload at every speed, more at high
-    speed; the rise from 300 to 500 N at 18,000 rpm is a small fraction of
-    seed B's 17.1 K (the row's reason)."""
+    speed; the rise from 300 to 500 N at 18,000 rpm, carried by the fitted
+    load friction, is between 40 % of seed B's 17.1 K and all of it (with
+    Harris' table f1 it was under a tenth; the row's reason)."""
     rises = []
     for n in (6000.0, 12000.0, 18000.0):
         v = _series(mech, "front_ball_temperature_c", speed_rpm=n)
         assert np.all(np.diff(v) > 0)
         rises.append(v[-1] - v[0])
     assert rises[-1] > rises[0]
-    assert 0.0 < rises[-1] < 17.1 / 5.0
+    assert 0.4 * 17.1 < rises[-1] < 17.1
 
 
 def test_fig08_thermal_displacement(demo: Path) -> None:

@@ -509,6 +509,7 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
         "spin (traction) friction coefficient of the spin moment",
     ),
     ("lubrication_factor_f0", "1", "f0", "Palmgren lubrication factor of the viscous moment"),
+    ("load_friction_scale", "1", "s_f1", "factor on Palmgren's load-friction factor f1"),
     ("churning_oil_fraction", "1", "X", "oil volume fraction of the oil-air mixture"),
     (
         "rolling_heat_w",
@@ -572,6 +573,12 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
         "W/(m^2 K)",
         "h_c",
         "thermal contact conductance between stator and sleeve (shrink fit)",
+    ),
+    (
+        "outer_ring_contact_w_per_m2_k",
+        "W/(m^2 K)",
+        "h_o",
+        "thermal contact conductance of the outer rings' seats in the housing",
     ),
     (
         "assembly_temperature_c",

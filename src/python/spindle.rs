@@ -307,6 +307,7 @@ impl PySpindle {
         d.set_item("lubricant", p.lubricant.name.clone())?;
         d.set_item("lubrication_factor_f0", p.lubrication_factor_f0)?;
         d.set_item("spin_friction", c.spin_friction_coefficient)?;
+        d.set_item("load_friction_scale", c.load_friction_scale)?;
         d.set_item("heat_model", c.heat_model.name())?;
         d.set_item("lubrication", c.lubrication.name())?;
         d.set_item("churning_oil_fraction", c.churning_oil_fraction)?;
@@ -558,7 +559,8 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 /// Heat-model settings of a spindle (docs/concepts/physics.md §9), from a
 /// Python dict: `heat_model` ("palmgren" | "skf"), `lubrication` (method;
 /// its defaults fill `lubrication_factor_f0` and `churning_oil_fraction`
-/// when not given), `skf_series`, `sliding_friction_ehl`,
+/// when not given), `load_friction_scale` (Palmgren's f1 times this),
+/// `skf_series`, `sliding_friction_ehl`,
 /// `replenishment_krs`, `seal_moment_n_m`.
 #[derive(FromPyObject)]
 #[pyo3(from_item_all)]
@@ -566,6 +568,7 @@ pub struct SpindleHeatArgs {
     heat_model: Option<String>,
     lubrication: Option<String>,
     lubrication_factor_f0: Option<f64>,
+    load_friction_scale: Option<f64>,
     churning_oil_fraction: Option<f64>,
     skf_series: Option<String>,
     sliding_friction_ehl: Option<f64>,
@@ -607,6 +610,9 @@ impl SpindleHeatArgs {
         )?;
         if supply.is_some() || self.lubrication.is_some() || self.churning_oil_fraction.is_some() {
             cfg.oil_supply = supply;
+        }
+        if let Some(s) = self.load_friction_scale {
+            cfg.load_friction_scale = crate::error::in_range("load_friction_scale", s, 0.0, 100.0)?;
         }
         if let Some(s) = &self.skf_series {
             cfg.skf.series = Some(SkfSeries::from_name(s)?);

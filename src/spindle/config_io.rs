@@ -80,6 +80,9 @@ pub fn check_params(p: &SpindleParams) -> Result<()> {
     ] {
         finite(name, v)?;
     }
+    if let Some(h) = p.outer_ring_contact_w_m2k {
+        positive("outer_ring_contact_w_m2k", h)?;
+    }
     positive("jacket_wetted_fraction", p.jacket_wetted_fraction)?;
     in_range("jacket_wetted_fraction", p.jacket_wetted_fraction, 0.0, 1.0)?;
     check_fits(p)
@@ -158,5 +161,24 @@ mod tests {
         assert!(e.contains("jacket_wetted_fraction"), "{e}");
         let e = SpindleConfig::from_json("{\"params\": 1}").unwrap_err().to_string();
         assert!(e.contains("spindle_config") && e.contains("line 1"), "{e}");
+    }
+    #[test]
+    fn load_friction_scale_defaults_to_one_and_is_checked() {
+        // A stored configuration without the field loads with Harris' f1.
+        let cfg = SpindleConfig::preset("seed-ceramic-spindle").unwrap();
+        let mut v: serde_json::Value = serde_json::from_str(&cfg.to_json().unwrap()).unwrap();
+        v.as_object_mut().unwrap().remove("load_friction_scale");
+        let back = SpindleConfig::from_json(&v.to_string()).unwrap();
+        assert_eq!(back.load_friction_scale, 1.0);
+        assert_eq!(back, cfg);
+        let mut bad = cfg.clone();
+        bad.load_friction_scale = -1.0;
+        let e = Spindle::new(bad).unwrap_err().to_string();
+        assert!(e.contains("load_friction_scale"), "{e}");
+        let mut skf = cfg;
+        skf.heat_model = crate::thermal::friction::HeatModel::Skf;
+        skf.load_friction_scale = 2.0;
+        let e = Spindle::new(skf).unwrap_err().to_string();
+        assert!(e.contains("load_friction_scale") && e.contains("palmgren"), "{e}");
     }
 }

@@ -80,6 +80,11 @@ pub const DEFAULT_SPIN_FRICTION: f64 = DEFAULT_SPIN_FRICTION_COEFFICIENT;
 /// Spring rate implied by seed B Fig. 17: 6.45 N / 17.92 um = 0.36 N/um.
 pub const SEED_B_SPRING_RATE_N_PER_M: f64 = 6.45 / 17.92e-6;
 
+/// The default of the dimensionless scales a stored configuration may omit.
+fn unit_scale() -> f64 {
+    1.0
+}
+
 /// Everything that defines a spindle besides the network parameters.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct SpindleConfig {
@@ -94,6 +99,11 @@ pub struct SpindleConfig {
     /// `spin_friction` still load.
     #[serde(alias = "spin_friction")]
     pub spin_friction_coefficient: f64,
+    /// Factor on Palmgren's load-friction factor f1 of every bearing
+    /// (dimensionless, >= 0; default 1, Harris' constants; the Palmgren
+    /// heat model only). Stored files without it load with 1.
+    #[serde(default = "unit_scale")]
+    pub load_friction_scale: f64,
     /// Temperature at which the spindle was assembled (zero thermal offsets) \[C\].
     pub assembly_temperature_c: f64,
     /// Effects (high-speed bearing terms, thermal expansion by part,
@@ -203,6 +213,7 @@ impl SpindleConfig {
             },
             radial_load_n: 0.0,
             spin_friction_coefficient: DEFAULT_SPIN_FRICTION_COEFFICIENT,
+            load_friction_scale: 1.0,
             assembly_temperature_c: ambient,
             effects: EffectSet::all().without(Effect::UnbalancedMagneticPull),
             magnetic_pull: Some(magnetic_pull),
@@ -328,6 +339,14 @@ impl Spindle {
     /// Build the pairs and the network.
     pub fn new(config: SpindleConfig) -> Result<Self> {
         non_negative("spin_friction_coefficient", config.spin_friction_coefficient)?;
+        in_range("load_friction_scale", config.load_friction_scale, 0.0, 100.0)?;
+        if config.load_friction_scale != 1.0 && config.heat_model != HeatModel::Palmgren {
+            return Err(Error::config(
+                "load_friction_scale",
+                config.load_friction_scale,
+                "scales Palmgren's f1: use it with heat_model \"palmgren\"",
+            ));
+        }
         in_range("churning_oil_fraction", config.churning_oil_fraction, 0.0, 1.0)?;
         if let Some(s) = &config.oil_supply {
             s.validate()?;
@@ -590,6 +609,7 @@ impl Spindle {
             lubrication: c.lubrication,
             lubrication_factor_f0: c.params.lubrication_factor_f0,
             spin_friction_coefficient: c.spin_friction_coefficient,
+            load_friction_scale: c.load_friction_scale,
             oil_volume_fraction: c.churning_oil_fraction,
             skf: c.skf,
             oil_supply: c.oil_supply,

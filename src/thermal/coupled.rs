@@ -245,6 +245,7 @@ pub fn friction_settings(options: &CoupledOptions) -> FrictionSettings {
         lubrication: options.lubrication,
         lubrication_factor_f0: options.lubrication_factor_f0,
         spin_friction_coefficient: options.spin_friction_coefficient,
+        load_friction_scale: 1.0,
         oil_volume_fraction: options.churning_oil_fraction,
         skf: options.skf,
         oil_supply: options.oil_supply,

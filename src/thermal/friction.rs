@@ -582,6 +582,10 @@ pub struct FrictionSettings {
     pub lubrication_factor_f0: f64,
     /// Spin friction coefficient mu_s (Palmgren model, with the effect on).
     pub spin_friction_coefficient: f64,
+    /// Factor on Palmgren's load-friction factor f1 = z (P0/C0)^y (Palmgren
+    /// model; 1 = Harris' table constants). A calibratable input: Harris'
+    /// z is a table mean, and a paper that states no f1 leaves it open.
+    pub load_friction_scale: f64,
     /// Oil volume fraction X of the ball drag (both models; 0 = off); the
     /// fixed fraction used when `oil_supply` is None.
     pub oil_volume_fraction: f64,
@@ -724,7 +728,7 @@ pub fn friction_heat(settings: &FrictionSettings, p: &FrictionPoint) -> Result<F
     let drag_w = sd.drag_w;
     let (m_a, m_b, seal, skf, mut heat) = match settings.heat_model {
         HeatModel::Palmgren => {
-            let m1 = load_moment_n_m(g, p.axial_n, p.radial_n, p.contact_angle_rad)?;
+            let m1 = settings.load_friction_scale * load_moment_n_m(g, p.axial_n, p.radial_n, p.contact_angle_rad)?;
             let mv = viscous_moment_n_m(
                 settings.lubrication_factor_f0,
                 p.viscosity_cst,

@@ -430,6 +430,7 @@ fn settings(model: HeatModel, x: f64) -> FrictionSettings {
         lubrication: Lubrication::Jet,
         lubrication_factor_f0: 1.7,
         spin_friction_coefficient: 0.05,
+        load_friction_scale: 1.0,
         oil_volume_fraction: x,
         skf: SkfSettings::default(),
         oil_supply: None,
@@ -505,4 +506,26 @@ fn coupled_state_with_skf_and_jet_drag_balances_heat() {
     // Split conserves the total.
     let sp = s.heat.split;
     assert!((sp.inner_ring_w + sp.balls_w + sp.outer_ring_w - h).abs() < 1e-9 * h);
+}
+
+#[test]
+fn load_friction_scale_multiplies_palmgren_m1_only() {
+    // The factor scales M1 = f1 P1 dm and nothing else: the heat grows by
+    // (s - 1) omega M1 and the split keeps Burton-Staph's halves.
+    let g = Bearing::preset("7009C").unwrap().geometry;
+    let at = |s: f64| {
+        let mut st = settings(HeatModel::Palmgren, 0.0);
+        st.load_friction_scale = s;
+        friction_heat(&st, &point(&g, 12_000.0, 500.0)).unwrap()
+    };
+    let (one, three) = (at(1.0), at(3.0));
+    let m1 = load_moment_n_m(&g, 400.0, 0.0, g.free_contact_angle_rad).unwrap();
+    assert_eq!(three.load_moment_n_m, 3.0 * m1);
+    assert_eq!(three.viscous_moment_n_m, one.viscous_moment_n_m);
+    let w = rpm_to_rad_s(12_000.0);
+    let extra = three.heat.total_w() - one.heat.total_w();
+    assert!((extra - 2.0 * w * m1).abs() < 1e-9 * extra, "{extra}");
+    // Zero load friction leaves the viscous heat alone.
+    let zero = at(0.0);
+    assert!((one.heat.total_w() - zero.heat.total_w() - w * m1).abs() < 1e-9 * one.heat.total_w());
 }

@@ -389,6 +389,14 @@ pub struct SpindleParams {
     pub jacket_wetted_fraction: f64,
     /// Thermal contact conductance stator / sleeve (shrink fit) [W/(m^2 K)].
     pub stator_contact_w_m2k: f64,
+    /// Thermal contact conductance of the outer rings' seats in the housing
+    /// [W/(m^2 K)], over the seat area pi D W of each bearing; None: perfect
+    /// contact (conduction through ring and housing only). A loose
+    /// (clearance) fit with an oil film conducts about 10^3 to 10^4
+    /// W/(m^2 K) (Yovanovich's gap and contact conductances); stored
+    /// configurations without it load with None.
+    #[serde(default)]
+    pub outer_ring_contact_w_m2k: Option<f64>,
     /// Cooling-water temperature, a boundary node \[C\] (seed B: 18).
     pub water_temperature_c: f64,
     /// Ambient air temperature, a boundary node \[C\] (seed B: 25).
@@ -453,6 +461,7 @@ impl SpindleParams {
             channel_height_m: 0.005,
             jacket_wetted_fraction: 0.5,
             stator_contact_w_m2k: 1000.0,
+            outer_ring_contact_w_m2k: None,
             water_temperature_c: 18.0,
             ambient_temperature_c: 25.0,
             oil_air_temperature_c: 25.0,
@@ -655,11 +664,16 @@ impl SpindleNetwork {
             let (rbi, rbo) = (0.5 * rbi, 0.5 * rbo);
             n.add_resistance(&format!("{tag}_balls-inner"), nodes[1], nodes[0], rbi)?;
             n.add_resistance(&format!("{tag}_balls-outer"), nodes[1], nodes[2], rbo)?;
+            // Seat contact: 1/(h pi D 2B) for the two bearings' seats.
+            let seat_r = p
+                .outer_ring_contact_w_m2k
+                .map_or(0.0, |h| 1.0 / (h * PI * g.outer_diameter_m * w2));
             n.add_resistance(
                 &format!("{tag}_outer-housing"),
                 nodes[2],
                 housing,
                 (g.outer_diameter_m / d_o).ln() / (2.0 * PI * b.outer_ring.conductivity_w_mk * w2)
+                    + seat_r
                     + (so / g.outer_diameter_m).ln() / (2.0 * PI * steel.conductivity_w_mk * w2),
             )?;
             let dm = g.pitch_diameter_m;

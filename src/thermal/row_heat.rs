@@ -185,6 +185,7 @@ mod tests {
             lubrication: Lubrication::OilAir,
             lubrication_factor_f0: 1.0,
             spin_friction_coefficient: 0.05,
+            load_friction_scale: 1.0,
             oil_volume_fraction: 0.0,
             oil_supply: None,
             skf: SkfSettings::default(),

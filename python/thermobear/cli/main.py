@@ -383,7 +383,7 @@ def _add_calibrate(c: argparse.ArgumentParser) -> None:
         type=_names_arg,
         required=True,
         metavar="NAME[,NAME...]",
-        help="the candidates to calibrate (1 to 3 parameters; see thermobear effects)",
+        help="the candidates to calibrate (1 to 4 parameters; see thermobear effects)",
     )
     c.add_argument(
         "--per-set",

@@ -1,6 +1,6 @@
 """Joint calibration ([`calibrate`][thermobear.calibrate]): several data sets at once -- rigs
 (each its own model spec), runs, load levels, quantities -- with parameters
-shared by every set or one value per set; up to three candidates calibrated
+shared by every set or one value per set; up to four candidates calibrated
 together by bounded least squares on the models themselves, with
 profile-likelihood intervals and an identifiability check.
 
@@ -35,7 +35,7 @@ from .setting import _predict, _Setting
 from .statistics import COND_MAX, fisher_identifiability
 
 #: Most distinct candidates calibrated together.
-MAX_JOINT = 3
+MAX_JOINT = 4
 #: The weighted residual of every point where the model fails at trial
 #: values inside the bounds (a spindle's thermal runaway at the largest
 #: friction): a misfit of a million sigmas, so the fit steps back from there.
@@ -251,7 +251,7 @@ def calibrate(
     seed: int = 0,
     progress: Any = None,
 ) -> Calibration:
-    """Calibrate up to three candidates (names from
+    """Calibrate up to four candidates (names from
     [`candidates`][thermobear.diagnosis.candidates.candidates] of
     each set's model: parameters, not switches) on several data sets at
     once. ``datasets``: a list or a dict (label -> pair) of ``(model,

@@ -176,6 +176,13 @@ PRELOAD_SCALE_BOUNDS = (0.7, 1.3)
 #: * ``lubrication_factor_f0``: the bounds of the spindle's lubrication
 #:   method (``thermobear.lubrication_defaults``: oil-air 0.85-3.4, half
 #:   and twice Palmgren's table value);
+#: * ``load_friction_scale`` 0.25-25 on Palmgren's load-friction factor
+#:   f1 (Harris' z = 0.001 for angular-contact bearings): from a quarter of
+#:   the table value to the load friction of an unlubricated contact
+#:   (f1 P1 dm with f1 about 0.006 at the seed preloads);
+#: * ``outer_ring_contact_w_per_m2_k`` 300-30,000 W/(m^2 K): the contact
+#:   conductance of a loose outer-ring seat, from a dry clearance fit to
+#:   an oil-filled tight one (Yovanovich's gap and contact conductances);
 #: * ``radial_load_n`` 0-3000 N at the nose: from a free-running spindle
 #:   to a heavy cut on a 45 mm front bearing (a fifth of its static rating);
 #: * ``unbalance_g_mm`` 0-10,000 g mm: the whole range the rotor model
@@ -185,12 +192,25 @@ UNSTATED_BOUNDS: dict[str, tuple[float, float]] = {
     "ball_diameter_scale": (0.8, 1.15),
     "span_scale": (0.5, 1.5),
     "motor_loss_scale": (0.25, 3.0),
+    "load_friction_scale": (0.25, 25.0),
+    "outer_ring_contact_w_per_m2_k": (300.0, 3.0e4),
     "radial_load_n": (0.0, 3000.0),
     "unbalance_g_mm": (0.0, 1.0e4),
 }
 #: The declarable inputs that change the spindle's stored dimensions.
-_DIMENSIONS = ("ball_diameter_scale", "span_scale", "motor_loss_scale")
-UNSTATED_INPUTS = (*_DIMENSIONS, "lubrication_factor_f0", "radial_load_n", "unbalance_g_mm")
+_DIMENSIONS = (
+    "ball_diameter_scale",
+    "span_scale",
+    "motor_loss_scale",
+    "outer_ring_contact_w_per_m2_k",
+)
+UNSTATED_INPUTS = (
+    *_DIMENSIONS,
+    "lubrication_factor_f0",
+    "load_friction_scale",
+    "radial_load_n",
+    "unbalance_g_mm",
+)
 _OPTIONS = (
     "spin_friction_coefficient",
     "preload_kind",
@@ -230,7 +250,10 @@ class SpindleModelSpec(ModelSpec):
     the spindle's own value): ``ball_diameter_scale``, ``span_scale`` and
     ``motor_loss_scale`` (factors on the spindle's balls, axial layout and
     motor losses, [`with_dimensions`][thermobear.spindle.dimensions.with_dimensions]),
-    ``lubrication_factor_f0``, ``radial_load_n`` (the working load at the
+    ``outer_ring_contact_w_per_m2_k`` (the contact conductance of the
+    outer rings' seats),
+    ``lubrication_factor_f0``, ``load_friction_scale`` (a factor on
+    Palmgren's load-friction factor f1), ``radial_load_n`` (the working load at the
     nose) and ``unbalance_g_mm`` (the rotor's unbalance as mass times
     radius, in place of ``unbalance_grade``). Given a number, each is
     applied and listed as a calibration candidate (bounds:
@@ -255,7 +278,8 @@ class SpindleModelSpec(ModelSpec):
         _check_option_names(options)
         self.spindle = spindle
         self._known = tuple(n for n, *_ in _native.effects())
-        self.effects = self._expand(list(self._known) if effects is None else effects)
+        every = [n for n in self._known if n != PULL_EFFECT or _has_pull_data(spindle)]
+        self.effects = self._expand(every if effects is None else effects)
         defaults = {
             "spin_friction_coefficient": _default_spin_friction(spindle),
             "preload_kind": spindle.preload_kind,
@@ -361,7 +385,8 @@ class SpindleModelSpec(ModelSpec):
         # exact to the last bit); another one is set
         rate = o["spring_rate_n_per_um"]
         spring = o["preload_kind"] == "spring" and rate != self.spindle.spring_rate_n_per_um
-        drag = ("lubrication", "churning_oil_fraction", "lubrication_factor_f0", *SUPPLY_OPTIONS)
+        drag = ("lubrication", "churning_oil_fraction", "lubrication_factor_f0",
+                "load_friction_scale", *SUPPLY_OPTIONS)  # fmt: skip
         radial = o["radial_load_n"]
         return self._dimensioned().with_options(
             preload_n=self.effective_preload_n(preload_n),
@@ -655,13 +680,24 @@ def _check_options(o: dict) -> None:
         _check_unstated(k, o[k])
 
 
+#: The effect that needs the motor's air-gap data.
+PULL_EFFECT = "unbalanced_magnetic_pull"
+
+
+def _has_pull_data(spindle: Spindle) -> bool:
+    """Whether ``spindle`` carries the motor's air-gap data (a spindle
+    described without a magnetic-pull table has none, so "every effect"
+    leaves the pull out)."""
+    return "magnetic_pull_static_n" in spindle.assumptions
+
+
 def _check_unstated(name: str, value: Any) -> None:
     """An unstated input: None, or a finite number (> 0 for the factors
     and f0, >= 0 for the unbalance; the nose load may point either way)."""
     if value is None:
         return
     ok = isinstance(value, (int, float)) and not isinstance(value, bool) and np.isfinite(value)
-    if ok and name in (*_DIMENSIONS, "lubrication_factor_f0"):
+    if ok and name in (*_DIMENSIONS, "lubrication_factor_f0", "load_friction_scale"):
         ok = value > 0.0
     elif ok and name == "unbalance_g_mm":
         ok = value >= 0.0
@@ -722,6 +758,14 @@ _UNSTATED_TEXT = {
     "span_scale": ("1", "axial layout between the bearing sets (spans, rotor core) as a factor"),
     "motor_loss_scale": ("1", "motor losses (stator and rotor) as a factor on the spindle's"),
     "lubrication_factor_f0": ("1", "Palmgren lubrication factor f0 of the viscous moment"),
+    "load_friction_scale": (
+        "1",
+        "Palmgren load-friction factor f1 as a factor on Harris' table value",
+    ),
+    "outer_ring_contact_w_per_m2_k": (
+        "W/(m^2 K)",
+        "thermal contact conductance of the outer rings' seats in the housing",
+    ),
     "radial_load_n": ("N", "working radial load at the spindle nose"),
     "unbalance_g_mm": ("g mm", "rotor unbalance (mass x radius) exciting the vibration"),
 }

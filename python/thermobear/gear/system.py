@@ -4,6 +4,7 @@ matrices, the bearing stiffness schedule against speed."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 from typing import TYPE_CHECKING, Any, Mapping, Optional, Union
 
 import numpy as np
@@ -155,6 +156,31 @@ class GearSystem:
             transmission_error_m=self._te_table(gear, transmission_error_um, points),
         )  # fmt: skip
         check_gear_system(gear.geometry, self.params)
+
+    @classmethod
+    def from_toml(cls, source: Union[str, Path]) -> "GearSystem":
+        """A gear system from a ``[gear_system]`` description: a file path,
+        TOML text or the name of a shipped file (``"seed-a-gear-system"``:
+        seed A's pair on its 6208 bearings, as ``GearSystem(GearPair.preset(
+        "seed-electric-drive"))`` builds it). An error names the file, the
+        line and the key (see Gears and dynamics, "Description files")."""
+        from ..config import located_config_errors
+        from .description import parse_description, read_description
+
+        path, text = read_description(source)
+        with located_config_errors(path, text):
+            return cls(**parse_description(text))
+
+    def to_toml(self, path: Union[str, Path, None] = None) -> str:
+        """The ``[gear_system]`` description of this system (written to
+        ``path`` when given; the text is returned either way).
+        ``from_toml`` of it gives this system to the last bit; a system the
+        text would not give back (a stiffness frame, a bearing that is not
+        a preset, a calibrated bearing model) raises
+        [`ConfigError`][thermobear.ConfigError]."""
+        from .description import to_toml
+
+        return to_toml(self, GearSystem.from_toml, path)
 
     @staticmethod
     def _stiffness_table(gear: GearPair, given: Any, points: int) -> Optional[list[float]]:

@@ -26,6 +26,7 @@ from typing import Any, Mapping, Optional
 
 from .. import _native
 from .. import _validate as val
+from .._toml_text import toml_value
 from ..errors import ConfigError
 from .parts import (
     PART_TYPES,
@@ -36,6 +37,7 @@ from .parts import (
     MagneticPull,
     Motor,
     Preload,
+    Shaft,
 )
 
 #: The preset whose configuration fills what a description leaves out.
@@ -130,6 +132,10 @@ def build_native(
     cfg["effects"] = _effects(cfg["effects"], effects, motor.magnetic_pull)
     if motor.magnetic_pull is not None:
         _put_pull(cfg["magnetic_pull"], motor.magnetic_pull)
+    elif motor != Motor() or p["shaft"] != Shaft():
+        # no pull table: the seed's air-gap data (kept, off) belong to the
+        # seed's motor on the seed's shaft; another machine has none
+        cfg["magnetic_pull"] = None
     try:
         return _native.Spindle.from_config(
             json.dumps(cfg),
@@ -203,6 +209,7 @@ PULL_FIELDS: tuple[tuple[str, str, int], ...] = (
 def _put_params(params: dict[str, Any], parts: dict[str, Any]) -> None:
     for key, part, field, exponent in PARAM_FIELDS:
         params[key] = to_si(getattr(parts[part], field), exponent)
+    params["outer_ring_contact_w_m2k"] = parts["housing"].outer_ring_contact_w_per_m2_k
 
 
 def _put_pull(holder: dict[str, Any], pull: MagneticPull) -> None:
@@ -238,6 +245,7 @@ def _heat(lub: Lubrication) -> dict[str, Any]:
         "heat_model": lub.heat_model,
         "lubrication": lub.method,
         "lubrication_factor_f0": lub.lubrication_factor_f0,
+        "load_friction_scale": lub.load_friction_scale,
         "churning_oil_fraction": lub.churning_oil_fraction,
         "sliding_friction_ehl": lub.sliding_friction_ehl,
         "replenishment_krs": lub.replenishment_krs,
@@ -288,6 +296,7 @@ def describe(native: Any) -> dict[str, Any]:
     if kind == "Spring":
         values["preload"]["spring_rate_n_per_um"] = from_si(data["rate_n_per_m"], 6)
     values["housing"]["assembly_temperature_c"] = cfg["assembly_temperature_c"]
+    values["housing"]["outer_ring_contact_w_per_m2_k"] = params.get("outer_ring_contact_w_m2k")
     values["tool"]["radial_load_n"] = cfg["radial_load_n"]
     lub = values["lubrication"]
     lub.update(
@@ -295,6 +304,7 @@ def describe(native: Any) -> dict[str, Any]:
         lubrication_factor_f0=params["lubrication_factor_f0"],
         churning_oil_fraction=cfg["churning_oil_fraction"], heat_model=a["heat_model"],
         spin_friction_coefficient=cfg["spin_friction_coefficient"],
+        load_friction_scale=cfg.get("load_friction_scale", 1.0),
         sliding_friction_ehl=cfg["skf"]["mu_ehl"],
         replenishment_krs=cfg["skf"]["replenishment_krs"],
         seal_moment_n_m=cfg["skf"]["seal_moment_n_m"],
@@ -323,23 +333,9 @@ def _describe_pull(holder: dict[str, Any]) -> MagneticPull:
 
 
 # -- TOML ------------------------------------------------------------------------
-def _toml_value(value: Any) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, str):
-        return json.dumps(value)
-    if isinstance(value, float):
-        return repr(value)
-    if isinstance(value, int):
-        return str(value)
-    if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(_toml_value(v) for v in value) + "]"
-    raise ConfigError(f"invalid value = {value!r}: cannot be written to TOML")
-
-
 def _table(header: str, items: Mapping[str, Any]) -> list[str]:
     lines = [f"[{header}]"]
-    lines += [f"{k} = {_toml_value(v)}" for k, v in items.items() if v is not None]
+    lines += [f"{k} = {toml_value(v)}" for k, v in items.items() if v is not None]
     return lines + [""]
 
 

@@ -17,13 +17,17 @@ new spindle; each change is a factor on the preset's value (1 keeps it):
   lever of the nose load change together.
 * ``motor_loss_scale``: the four motor losses (stator copper and iron,
   rotor copper and windage) alike.
+
+And one value: ``outer_ring_contact_w_per_m2_k``, the thermal contact
+conductance of the outer rings' seats in the housing (None keeps the
+spindle's own; see [`Housing`][thermobear.Housing]).
 """
 
 from __future__ import annotations
 
 import json
 import math
-from typing import Any
+from typing import Any, Optional
 
 from ..errors import ConfigError
 
@@ -92,6 +96,7 @@ def with_dimensions(
     ball_diameter_scale: float = 1.0,
     span_scale: float = 1.0,
     motor_loss_scale: float = 1.0,
+    outer_ring_contact_w_per_m2_k: Optional[float] = None,
 ) -> Any:
     """A copy of ``spindle`` with its balls, axial layout and motor losses
     scaled (module doc); every other setting kept. A factor of 1 changes
@@ -105,12 +110,17 @@ def with_dimensions(
     balls = _factor("ball_diameter_scale", ball_diameter_scale)
     span = _factor("span_scale", span_scale)
     losses = _factor("motor_loss_scale", motor_loss_scale)
-    if balls == span == losses == 1.0:
+    seat = None
+    if outer_ring_contact_w_per_m2_k is not None:
+        seat = _factor("outer_ring_contact_w_per_m2_k", outer_ring_contact_w_per_m2_k)
+    if balls == span == losses == 1.0 and seat is None:
         return spindle
     state = dict(spindle._native.__reduce__()[1][0])
     data = json.loads(state["data"])
     config = scaled_layout(data["config"], span)
     config["params"] = scaled_losses(scaled_balls(config["params"], balls), losses)
+    if seat is not None:
+        config["params"]["outer_ring_contact_w_m2k"] = seat
     data["config"] = config
     state["data"] = json.dumps(data)
     return Spindle(_native._restore(state))

@@ -127,8 +127,11 @@ class Housing:
     """The steel housing: the sleeve around the stator (outside diameter
     ``sleeve_outer_diameter_mm``, shrink-fit contact conductance
     ``stator_contact_w_per_m2_k`` to the stator), the bearing-seat housings
-    at each end, the ambient air around it and the temperature at which the
-    spindle was assembled (zero thermal offsets; None: the ambient)."""
+    at each end (``outer_ring_contact_w_per_m2_k``: the thermal contact
+    conductance of the outer rings' seats, about 10^3-10^4 for a loose fit
+    with an oil film; None: perfect contact), the ambient air around it and
+    the temperature at which the spindle was assembled (zero thermal
+    offsets; None: the ambient)."""
 
     sleeve_outer_diameter_mm: float = 180.0
     front_housing_length_mm: float = 60.0
@@ -136,12 +139,14 @@ class Housing:
     stator_contact_w_per_m2_k: float = 1000.0
     ambient_temperature_c: float = 25.0
     assembly_temperature_c: Optional[float] = None
+    outer_ring_contact_w_per_m2_k: Optional[float] = None
 
     def __post_init__(self) -> None:
         _check_reals(self, {
             "sleeve_outer_diameter_mm": POS, "front_housing_length_mm": POS,
             "rear_housing_length_mm": POS, "stator_contact_w_per_m2_k": POS,
             "ambient_temperature_c": ANY, "assembly_temperature_c": ANY,
+            "outer_ring_contact_w_per_m2_k": POS,
         })  # fmt: skip
 
 
@@ -241,9 +246,10 @@ class Lubrication:
     the method's defaults; with an oil supply the fraction follows the
     supply: leave it at 0 or None), the
     oil-air supply temperature (a boundary), ``heat_model`` ("palmgren",
-    "skf"), the spin friction coefficient, the SKF-model settings and the
-    oil supply (as [`Spindle.with_options`][thermobear.Spindle.with_options];
-    None: none)."""
+    "skf"), the spin friction coefficient, the factor on Palmgren's
+    load-friction factor f1 (``load_friction_scale``, 1: Harris'
+    constants), the SKF-model settings and the oil supply (as
+    [`Spindle.with_options`][thermobear.Spindle.with_options]; None: none)."""
 
     method: str = "oil-air"
     lubricant: str = "ISO VG 32"
@@ -252,6 +258,7 @@ class Lubrication:
     oil_air_temperature_c: float = 25.0
     heat_model: str = "palmgren"
     spin_friction_coefficient: float = 0.05
+    load_friction_scale: float = 1.0
     sliding_friction_ehl: Optional[float] = None
     replenishment_krs: Optional[float] = None
     seal_moment_n_m: float = 0.0
@@ -273,7 +280,8 @@ class Lubrication:
         _check_reals(self, {
             "lubrication_factor_f0": NONNEG, "churning_oil_fraction": (0.0, 1.0, False),
             "oil_air_temperature_c": ANY, "spin_friction_coefficient": NONNEG,
-            "sliding_friction_ehl": NONNEG, "replenishment_krs": NONNEG,
+            "load_friction_scale": NONNEG, "sliding_friction_ehl": NONNEG,
+            "replenishment_krs": NONNEG,
             "seal_moment_n_m": NONNEG, "oil_flow_cm3_per_min": NONNEG,
             "jet_velocity_m_per_s": NONNEG, "oil_volume_cm3_per_h": NONNEG,
             "air_flow_l_per_min": NONNEG, "oil_level_mm": NONNEG,

@@ -112,7 +112,9 @@ class Spindle:
         ``lubrication`` ("grease", "oil-air", "oil-mist", "jet", "oil-bath":
         its defaults fill ``lubrication_factor_f0`` and
         ``churning_oil_fraction`` when they are not given),
-        ``lubrication_factor_f0``, ``churning_oil_fraction`` (ball-drag oil
+        ``lubrication_factor_f0``, ``load_friction_scale`` (Palmgren's
+        load-friction factor f1 times this, default 1; the "palmgren" heat
+        model only), ``churning_oil_fraction`` (ball-drag oil
         volume fraction, 0..1), ``skf_series``, ``sliding_friction_ehl``,
         ``replenishment_krs``, ``seal_moment_n_m`` (as for
         [`thermobear.thermal_state`][thermobear.thermal_state]). ``spin_friction_coefficient``:
@@ -387,6 +389,7 @@ SPINDLE_HEAT_OPTIONS = (
     "heat_model",
     "lubrication",
     "lubrication_factor_f0",
+    "load_friction_scale",
     "churning_oil_fraction",
     "skf_series",
     "sliding_friction_ehl",
@@ -412,8 +415,8 @@ def _heat_args(heat: dict[str, Any]) -> Optional[dict[str, Any]]:
     if all(v is None for v in heat.values()):
         return None
     out = {k: heat.get(k) for k in SPINDLE_HEAT_OPTIONS}
-    for k in ("lubrication_factor_f0", "churning_oil_fraction", "sliding_friction_ehl",
-              "replenishment_krs", "seal_moment_n_m"):  # fmt: skip
+    for k in ("lubrication_factor_f0", "load_friction_scale", "churning_oil_fraction",
+              "sliding_friction_ehl", "replenishment_krs", "seal_moment_n_m"):  # fmt: skip
         out[k] = val.optional_real(k, out[k], 0.0)
     for k in ("heat_model", "lubrication", "skf_series"):
         out[k] = None if out[k] is None else val.text(k, out[k])

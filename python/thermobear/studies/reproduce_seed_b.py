@@ -5,7 +5,7 @@ other quoted number predicted with its 95 % band.
 Seed B's spindle and bearing tables are lost from its text, so the spindle
 preset carries assumptions. The rows of ``papers/seed_b_quotes.csv`` with
 ``role`` "fitted" pin them, stage by stage (``STAGES``, each one
-[`thermobear.calibrate`][thermobear.calibrate] of up to three inputs on the
+[`thermobear.calibrate`][thermobear.calibrate] of up to four inputs on the
 data sets of the settings its rows hold at; two rounds, each stage at the
 others' latest values):
 
@@ -15,22 +15,24 @@ others' latest values):
    104.35 N, also depends on the ball count, which the lost table would
    state: it is checked, not fitted);
 2. the heat and the shaft length between the sets
-   (``lubrication_factor_f0``, ``motor_loss_scale``, ``span_scale``) together
-   from Fig. 5's ball, inner and outer ring at 18,000 rpm (64.8 / 49.8 /
-   38.9 C), Fig. 6's ball at 500 N (74.2 C) and Fig. 17's axial growth at
-   the same 18,000 rpm (35.38 um): the growth is the shaft's temperature
-   over its length, so the two are pinned jointly. Fig. 17's 12,000 rpm
-   growth (17.92 um) is a prediction: from the room temperature no heat
-   balance halves the growth between 18,000 and 12,000 rpm as seed B's
-   does, so the two growths together would pin a shape, not a length;
-3. the heat that grows with preload (``spin_friction_coefficient``) from
-   the ball at 400 and 500 N (64.8 / 74.2 C);
-4. the preload spring (``spring_rate_n_per_um``) from Fig. 17's
+   (``lubrication_factor_f0``, ``load_friction_scale``,
+   ``motor_loss_scale``, ``span_scale``) together from Fig. 5's ball,
+   inner and outer ring at 18,000 rpm and 400 N (64.8 / 49.8 / 38.9 C),
+   Fig. 6's ball at 500 N (74.2 C) and Fig. 17's axial growth at the same
+   18,000 rpm (35.38 um): the viscous heat sets the level, the load
+   friction (a factor on Palmgren's f1) the rise with preload, and the
+   growth is the shaft's temperature over its length, so the four are
+   pinned jointly (fitted one after the other they trade along the
+   growth). Fig. 17's 12,000 rpm growth (17.92 um) is a prediction: from
+   the room temperature no heat balance halves the growth between 18,000
+   and 12,000 rpm as seed B's does, so the two growths together would pin
+   a shape, not a length;
+3. the preload spring (``spring_rate_n_per_um``) from Fig. 17's
    compensation preload at 18,000 rpm (12.74 N, beside its growth);
-5. the working radial load at the nose (``radial_load_n``) from Fig. 15b's
+4. the working radial load at the nose (``radial_load_n``) from Fig. 15b's
    radial displacement without thermal displacement, "about 2 um" above
    460 N at 12,000 rpm;
-6. the rotor's unbalance (``unbalance_g_mm``) from Fig. 20a's 1X velocity
+5. the rotor's unbalance (``unbalance_g_mm``) from Fig. 20a's 1X velocity
    amplitude, 7.53 mm/s at 12,000 rpm.
 
 The calibrated values, with the stages' covariances side by side, make one
@@ -102,6 +104,7 @@ NULLS: dict[str, float] = {
     "span_scale": 1.0,
     "motor_loss_scale": 1.0,
     "lubrication_factor_f0": 1.0,
+    "load_friction_scale": 1.0,
     "unbalance_g_mm": 5.0,
 }
 NOSE_LOAD_NULL_N = 500.0
@@ -121,10 +124,9 @@ STAGES: tuple[Stage, ...] = (
     Stage("ball size", ("ball_diameter_scale",), ("B14-outer-inner",)),
     Stage(
         "heat and shaft length",
-        ("lubrication_factor_f0", "motor_loss_scale", "span_scale"),
+        ("lubrication_factor_f0", "load_friction_scale", "motor_loss_scale", "span_scale"),
         ("B05-ball", "B05-inner", "B05-outer", "B06-ball-500", "B17-growth-18000"),
     ),
-    Stage("preload heat", ("spin_friction_coefficient",), ("B05-ball", "B06-ball-500")),
     Stage("spring", ("spring_rate_n_per_um",), ("B17-comp-18000",)),
     Stage("nose load", ("radial_load_n",), ("B15-flat",)),
     Stage("unbalance", ("unbalance_g_mm",), ("B20-a1",)),

@@ -292,8 +292,9 @@ def _adder(rows: list) -> Any:
 
 
 _TEMPS = (
-    "heat (Palmgren f0, spin friction, motor losses) pinned by the three Fig. 5 "
-    "temperatures and Fig. 6's 500 N ball together; they cannot all be met"
+    "heat (Palmgren f0, load friction, motor losses) and shaft length pinned by the three "
+    "Fig. 5 temperatures, Fig. 6's 500 N ball and Fig. 17's 35.38 um together; they "
+    "cannot all be met"
 )
 _HARRIS = (
     "trend differs from seed B Fig. 13a: centrifugal force presses the balls outward, "
@@ -489,7 +490,7 @@ def _rows_preload(best: Any, comp: Any) -> list[tuple]:
     )
     for n, u, f in ((12_000.0, 17.92, 6.45), (15_000.0, 26.40, 9.50), (18_000.0, 35.38, 12.74)):
         gnote = (
-            "shaft vs housing between the sets, their spacing pinned by 17.92 and 35.38 um; "
+            "shaft vs housing between the sets, their spacing pinned with the heat by 35.38 um; "
             "from the room temperature our growth rises 1.2 x from 12,000 to 18,000 rpm, "
             "seed B's 2.0 x (zero near 6,000 rpm)"
         )
@@ -507,7 +508,7 @@ def _rows_preload(best: Any, comp: Any) -> list[tuple]:
             f,
             "N",
             _pick(comp, "compensation_preload_n", speed_rpm=n),
-            "k_s u with k_s pinned by 6.45 N at 12,000 rpm; differs through the growth",
+            "k_s u with k_s pinned by 12.74 N at 18,000 rpm; differs through the growth",
         )
     return rows
 
