@@ -199,3 +199,23 @@ def test_diagnosis_spec_and_prediction_of_a_described_spindle(custom):
     front = df.filter(pl.col("quantity") == "front_outer_ring_temperature_c")
     # no calibration: the prediction is the described spindle's own state
     assert front["value"][0] == p["front_outer_ring_temperature_c"][0]
+
+
+def test_parts_of_a_calibrated_spindle_carry_its_scaled_bearings():
+    """A spindle whose balls a calibration scaled has no preset bearings:
+    its parts give them back as Bearings, ``Spindle(...)`` takes them and
+    solves the same state (to rounding: the parts are in mm), a description
+    file refuses them by name, and the preset's name is refused for it."""
+    from thermobear.studies.reproduce_seed_b import fitted_spindle
+
+    fitted = fitted_spindle().model()[0]
+    parts = fitted.parts
+    assert isinstance(parts["front"], tb.Bearing) and isinstance(parts["rear"], tb.Bearing)
+    with pytest.raises(tb.ConfigError, match="name of your own"):
+        tb.Spindle(**parts)
+    again = tb.Spindle(**{**parts, "name": "fitted-seed-b"})
+    a, b = again.thermal_state(15000.0), fitted.thermal_state(15000.0)
+    for col in ("front_ball_temperature_c", "axial_growth_um", "k_xx_n_per_m", "total_heat_w"):
+        assert a[col][0] == pytest.approx(b[col][0], rel=1e-12), col
+    with pytest.raises(tb.ConfigError, match="not a bearing preset"):
+        fitted.to_toml()

@@ -283,8 +283,30 @@ def _preset_bearing_name(bearing: dict[str, Any], which: str) -> str:
     )
 
 
-def describe(native: Any) -> dict[str, Any]:
-    """The description (``Spindle`` keywords -> parts) of a native spindle."""
+def _bearing_of(bearing: dict[str, Any], which: str, named: bool) -> Any:
+    """A configured bearing as its preset name; with ``named`` False, a
+    bearing that is no preset (balls scaled by a calibration, a bearing
+    built in Python) as a [`Bearing`][thermobear.Bearing] rebuilt from its
+    stored data."""
+    from ..bearing import Bearing
+
+    try:
+        return _preset_bearing_name(bearing, which)
+    except ConfigError:
+        if named:
+            raise
+    rebuild, (envelope,) = Bearing.preset(BASE_BEARING)._b.__reduce__()
+    return Bearing(rebuild({**envelope, "data": json.dumps(bearing)}))
+
+
+#: A preset whose stored envelope carries a rebuilt bearing's data.
+BASE_BEARING = "7009C"
+
+
+def describe(native: Any, named: bool = True) -> dict[str, Any]:
+    """The description (``Spindle`` keywords -> parts) of a native spindle;
+    ``named``: bearings by preset name only (a description file's rule),
+    else a bearing that is no preset comes back as a ``Bearing``."""
     cfg = json.loads(native.config_json())
     a = dict(native.assumptions())
     params = cfg["params"]
@@ -318,7 +340,7 @@ def describe(native: Any) -> dict[str, Any]:
     out: dict[str, Any] = {"name": native.name}
     out.update({k: PART_TYPES[k](**v) for k, v in values.items()})
     for which in BEARING_TABLES:
-        out[which] = _preset_bearing_name(params[f"{which}_bearing"], which)
+        out[which] = _bearing_of(params[f"{which}_bearing"], which, named)
     base = [e for e in json.loads(_base_json())["effects"] if e != PULL_EFFECT]
     if sorted(e for e in effects if e != PULL_EFFECT) != sorted(base):
         out["effects"] = [e for e in effects if e != PULL_EFFECT]

@@ -78,10 +78,13 @@ class Spindle:
     @property
     def parts(self) -> dict[str, Any]:
         """The description of this spindle: the keywords of ``Spindle(...)``
-        (``name``, ``shaft``, ``front``, ``rear``, ``preload`` ...)."""
+        (``name``, ``shaft``, ``front``, ``rear``, ``preload`` ...); a
+        bearing that is no preset (balls scaled by a calibration) comes back
+        as a [`Bearing`][thermobear.Bearing], which ``Spindle(...)`` takes
+        (a description file, ``to_toml``, names presets only)."""
         from .description import describe
 
-        return describe(self._native)
+        return describe(self._native, named=False)
 
     @staticmethod
     def preset(name: str) -> "Spindle":
@@ -529,7 +532,8 @@ def _check_preset_name(native: Any) -> None:
     name = str(native.name)
     if name not in _native.Spindle.preset_names():
         return
-    mine, theirs = describe(native), describe(_native.Spindle.preset(name))
+    mine = describe(native, named=False)
+    theirs = describe(_native.Spindle.preset(name), named=False)
     differ = [k for k in ("shaft", "front", "rear", "motor") if mine.get(k) != theirs.get(k)]
     if differ:
         raise val.fail(
