@@ -478,3 +478,49 @@ def test_bifurcation_plot_marks_unsettled_speeds() -> None:
     assert [len(o) for o in sets] == [2, 2]
     np.testing.assert_array_equal(sets[1][:, 1], [3.0, 4.0])
     assert len(tb.plot.bifurcation(df, unsettled_color=None).collections) == 1
+
+
+@pytest.mark.parametrize(
+    ("key", "value"),
+    [("helix_angle_deg", -30.0), ("helix_angle_deg", 45.0), ("helix_angle_deg", 60.0),
+     ("normal_pressure_angle_deg", 50.0), ("normal_pressure_angle_deg", 0.0)],
+)  # fmt: skip
+def test_gear_angles_outside_the_models_range_are_named_in_degrees(key, value):
+    """The tooth model takes helix angles in [0, 45) deg and normal pressure
+    angles in (0, 45] deg; a value outside is named in the caller's field
+    and unit, not the core's radians."""
+    kw = {
+        "pinion_teeth": 26, "gear_teeth": 41, "normal_module_mm": 2.0,
+        "normal_pressure_angle_deg": 20.0, "helix_angle_deg": 20.0, "face_width_mm": 25.0,
+        "youngs_modulus_mpa": 206000.0, "poisson_ratio": 0.3, "density_t_per_mm3": 7.8e-9,
+        "mass_kg": (0.5, 1.2), "polar_inertia_t_mm2": (0.1, 0.6), "input_torque_n_m": 100.0,
+    }  # fmt: skip
+    with pytest.raises(tb.ConfigError, match=rf"invalid {key} = "):
+        tb.GearPair.from_table(**{**kw, key: value})
+    tb.GearPair.from_table(**kw)  # the same pair inside the ranges builds
+
+
+def test_mesh_tables_of_unequal_lengths_keep_each_tables_samples():
+    """A stiffness table on 16 points and a TE table on 40 give one frame
+    on the union of the two phase grids (48 phases), each column null where
+    its table has no sample; the stiffness column, nulls dropped, rebuilds
+    the model's stiffness table bit for bit."""
+    pair = tb.GearPair.preset("seed-electric-drive")
+    base = tb.GearSystem(pair).mesh_tables()
+    ph16, ph40 = np.arange(16) / 16, np.arange(40) / 40
+    grid = base["mesh_phase"].to_numpy()
+    k = np.interp(ph16, grid, base["normal_stiffness_n_per_m"].to_numpy())
+    te = np.interp(ph40, grid, base["transmission_error_um"].to_numpy())
+    system = tb.GearSystem(
+        pair,
+        mesh_stiffness_n_per_m=pl.DataFrame({"mesh_phase": ph16, "normal_stiffness_n_per_m": k}),
+        transmission_error_um=pl.DataFrame({"mesh_phase": ph40, "transmission_error_um": te}),
+    )
+    t = system.mesh_tables()
+    assert t.height == len(np.union1d(ph16, ph40)) == 48
+    assert t["normal_stiffness_n_per_m"].null_count() == 32
+    assert t["transmission_error_um"].null_count() == 8
+    kk = t.drop_nulls("normal_stiffness_n_per_m").select("mesh_phase", "normal_stiffness_n_per_m")
+    back = tb.GearSystem(pair, mesh_stiffness_n_per_m=kk)
+    got = back.mesh_tables()["normal_stiffness_n_per_m"].drop_nulls().to_numpy()
+    assert np.array_equal(got, kk["normal_stiffness_n_per_m"].to_numpy())

@@ -69,13 +69,19 @@ class GearPair:
         addendum_coeff: float = 1.0,
         dedendum_coeff: float = 1.25,
     ) -> "GearPair":
+        # the angles in the model's own ranges, named in degrees
+        helix = val.real("helix_angle_deg", helix_angle_deg)
+        if not 0.0 <= helix < 45.0:
+            raise val.fail("helix_angle_deg", helix, "a finite number in [0, 45)")
         return cls(
             _native.GearPair.from_table(
                 val.whole("pinion_teeth", pinion_teeth, 1),
                 val.whole("gear_teeth", gear_teeth, 1),
                 val.real("normal_module_mm", normal_module_mm, 0.0, open_lo=True),
-                val.real("normal_pressure_angle_deg", normal_pressure_angle_deg, 0.0, 90.0),
-                val.real("helix_angle_deg", helix_angle_deg, -90.0, 90.0),
+                val.real(
+                    "normal_pressure_angle_deg", normal_pressure_angle_deg, 0.0, 45.0, open_lo=True
+                ),
+                helix,
                 val.real("face_width_mm", face_width_mm, 0.0, open_lo=True),
                 val.real("youngs_modulus_mpa", youngs_modulus_mpa, 0.0, open_lo=True),
                 val.real("poisson_ratio", poisson_ratio, -1.0, 0.5),

@@ -322,10 +322,26 @@ class GearSystem:
         the model uses over one mesh period: ``mesh_phase`` (i / n),
         ``normal_stiffness_n_per_m``, ``transmission_error_um``,
         ``transmission_error_m``. Given back as ``mesh_stiffness_n_per_m=`` /
-        ``transmission_error_um=`` it rebuilds the same model bit for bit."""
+        ``transmission_error_um=`` it rebuilds the same model bit for bit.
+        Tables given on different numbers of points keep their own samples:
+        the phases are the union of both grids and each column is null
+        where its table has no sample (drop the nulls of a column to give it
+        back)."""
         import polars as pl
 
-        return pl.DataFrame({k: np.asarray(v) for k, v in self._s.mesh_tables().items()})
+        t = {k: np.asarray(v) for k, v in self._s.mesh_tables().items()}
+        nk, ne = len(t["normal_stiffness_n_per_m"]), len(t["transmission_error_m"])
+        if nk == ne:
+            return pl.DataFrame(t)
+        grids = {"normal_stiffness_n_per_m": nk, "transmission_error_um": ne,
+                 "transmission_error_m": ne}  # fmt: skip
+        tables = [
+            pl.DataFrame({"mesh_phase": np.arange(n) / n, col: t[col]}) for col, n in grids.items()
+        ]
+        out = pl.DataFrame({"mesh_phase": np.union1d(np.arange(nk) / nk, np.arange(ne) / ne)})
+        for table in tables:
+            out = out.join(table, on="mesh_phase", how="left")
+        return out
 
     @property
     def mesh_model(self) -> str:
