@@ -38,6 +38,7 @@ import numpy as np
 
 from .._validate import did_you_mean
 from ..errors import ConfigError, ThermobearError
+from ..spindle.description import PULL_EFFECT
 from ..spindle.spindle import Spindle, _state_row
 from ..thermal.oil_supply import SUPPLY_OPTIONS
 from .candidates import (
@@ -678,10 +679,6 @@ def _check_options(o: dict) -> None:
         )
     for k in UNSTATED_INPUTS:
         _check_unstated(k, o[k])
-
-
-#: The effect that needs the motor's air-gap data.
-PULL_EFFECT = "unbalanced_magnetic_pull"
 
 
 def _has_pull_data(spindle: Spindle) -> bool:
