@@ -61,6 +61,12 @@ pub struct SystemConfig {
     pub sweep: Option<SweepConfig>,
     /// The `[model]` section: effect switches and coupled-thermal inputs.
     pub model: Option<ModelConfig>,
+    /// Bearings a `[bearing] preset` may name beyond the built-in presets,
+    /// by the name written there (not part of the file: the caller adds
+    /// them with [`SystemConfig::with_catalogue`], e.g. the Python
+    /// package's bearings by catalogue designation).
+    #[serde(skip)]
+    pub catalogue: std::collections::HashMap<String, Bearing>,
 }
 
 /// A user material: a preset `base` with any property overridden.
@@ -210,6 +216,19 @@ impl SystemConfig {
     /// back as [`Error::Parse`] with the key and line.
     pub fn from_toml(text: &str) -> Result<Self> {
         toml::from_str(text).map_err(|e| Error::Parse(e.to_string().trim().replace('\n', " ")))
+    }
+
+    /// The same description with `bearings` (name as written -> bearing)
+    /// resolvable as `[bearing] preset` names after the built-in presets.
+    pub fn with_catalogue(mut self, bearings: std::collections::HashMap<String, Bearing>) -> Self {
+        self.catalogue = bearings;
+        self
+    }
+
+    /// The bearing a `[bearing] preset` name stands for: a built-in preset,
+    /// else a catalogue bearing of that name (the preset's error otherwise).
+    pub fn preset_bearing(&self, name: &str) -> Result<Bearing> {
+        Bearing::preset(name).or_else(|e| self.catalogue.get(name).cloned().ok_or(e))
     }
 
     /// Read and parse a file.
@@ -386,7 +405,7 @@ impl BearingConfig {
     pub fn build(&self, sys: &SystemConfig) -> Result<Bearing> {
         let mm = 1e-3;
         let base = match &self.preset {
-            Some(p) => Some(Bearing::preset(p)?),
+            Some(p) => Some(sys.preset_bearing(p)?),
             None => None,
         };
         let bg = base.as_ref().map(|b| &b.geometry);
@@ -525,6 +544,28 @@ mod tests {
         assert!(e.to_string().contains("ball_diameter"), "{e}");
         let e = SystemConfig::from_toml("[bearnig]\n").unwrap_err();
         assert!(e.to_string().contains("bearnig"), "{e}");
+    }
+
+    #[test]
+    fn catalogue_bearings_resolve_after_the_presets() {
+        let text = "[bearing]\npreset = \"7014C\"\nfree_contact_angle_deg = 25.0\n";
+        let plain = SystemConfig::from_toml(text).unwrap();
+        assert!(plain.bearing().is_err(), "not a built-in preset");
+        let mut b = Bearing::preset("7009C").unwrap();
+        b.name = "7014C".into();
+        let mut cat = std::collections::HashMap::new();
+        cat.insert("7014C".to_string(), b.clone());
+        let got = plain.with_catalogue(cat.clone()).bearing().unwrap();
+        // the catalogue bearing is the base; explicit keys still win
+        assert_eq!(got.geometry.ball_count, b.geometry.ball_count);
+        assert!((got.geometry.free_contact_angle_rad - 25f64.to_radians()).abs() < 1e-12);
+        // a built-in preset is never shadowed by the catalogue
+        cat.insert("6208".to_string(), b);
+        let sys = SystemConfig::from_toml("[bearing]\npreset = \"6208\"\n").unwrap();
+        assert_eq!(
+            sys.with_catalogue(cat).bearing().unwrap(),
+            Bearing::preset("6208").unwrap()
+        );
     }
 
     #[test]

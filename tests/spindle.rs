@@ -338,3 +338,89 @@ fn magnetic_pull_agrees_with_the_rotor_model_and_vanishes_without_flux() {
     cfg.magnetic_pull = None;
     assert!(matches!(Spindle::new(cfg), Err(Error::Config { .. })));
 }
+
+#[test]
+fn extra_heat_enters_the_front_bearings_and_the_heat_balance() {
+    use thermobear::thermal::row_heat::oil_temperature_c;
+    let base = spring_spindle("seed-ceramic-spindle", 400.0);
+    let extra_w = 80.0;
+    let sp = Spindle::new(SpindleConfig {
+        extra_heat_w: extra_w,
+        ..base.config.clone()
+    })
+    .unwrap();
+    let (s0, s) = (
+        base.thermal_state(12_000.0).unwrap(),
+        sp.thermal_state(12_000.0).unwrap(),
+    );
+    // Each front bearing reports its friction heat at the solved state plus
+    // half the extra heat, split like rolling heat (1/4, 1/2, 1/4); the
+    // friction heat is recomputed at the converged temperatures, which the
+    // fixed point leaves within its tolerance (1e-4 K): 1e-3 W.
+    let p = &sp.config.params;
+    let ball_c = s.temperatures.get("front_balls").unwrap();
+    let oil_c = oil_temperature_c(sp.config.effects, p.oil_air_temperature_c, Some(ball_c));
+    for k in 0..2 {
+        let friction = sp.row_heat(&s.front.bearings[k], &p.front_bearing, oil_c).unwrap();
+        let h = &s.bearing_heat[k];
+        let added = h.heat.total_w() - friction.heat.total_w();
+        assert!((added - 0.5 * extra_w).abs() < 1e-3, "{added}");
+        let ring = h.split.outer_ring_w - friction.split.outer_ring_w;
+        let balls = h.split.balls_w - friction.split.balls_w;
+        assert!((ring - 0.125 * extra_w).abs() < 1e-3 && (balls - 0.25 * extra_w).abs() < 1e-3);
+    }
+    // Sources = motor + bearings (extra included); all of it leaves.
+    let bearings: f64 = s.bearing_heat.iter().map(|h| h.heat.total_w()).sum();
+    assert!((s.total_heat_w - s.motor_losses_w - bearings).abs() < 1e-9 * s.total_heat_w);
+    assert!((s.boundary_flow_w - s.total_heat_w).abs() < 1e-6 * s.total_heat_w);
+    // The heat warms the front set more than the rear.
+    let rise = |n: &str| s.temperatures.get(n).unwrap() - s0.temperatures.get(n).unwrap();
+    assert!(rise("front_outer") > rise("rear_outer") && rise("front_outer") > 0.5);
+    // Zero is the spindle as it was; a negative heat is refused by name.
+    let zero = Spindle::new(SpindleConfig {
+        extra_heat_w: 0.0,
+        ..base.config.clone()
+    })
+    .unwrap();
+    assert_eq!(zero.thermal_state(12_000.0).unwrap().total_heat_w, s0.total_heat_w);
+    match Spindle::new(SpindleConfig {
+        extra_heat_w: -1.0,
+        ..base.config.clone()
+    }) {
+        Err(Error::Config { field, .. }) => assert_eq!(field, "extra_heat_w"),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn unknown_heat_law_is_the_extra_heat_of_its_speed() {
+    // The law max(0, a x + b x^2), x = n / n_ref, at 12,000 rpm of a 10,000
+    // rpm reference: 30 * 1.2 + 20 * 1.44 = 64.8 W, the same state as a
+    // constant extra heat of 64.8 W; a law clipped at zero adds nothing.
+    let base = spring_spindle("seed-ceramic-spindle", 400.0);
+    let with = |e: f64, a: f64, b: f64, r: f64| {
+        Spindle::new(SpindleConfig {
+            extra_heat_w: e,
+            unknown_heat_linear_w: a,
+            unknown_heat_quadratic_w: b,
+            unknown_heat_reference_rpm: r,
+            ..base.config.clone()
+        })
+    };
+    let law = with(0.0, 30.0, 20.0, 10_000.0).unwrap();
+    assert!((law.config.extra_heat_at_w(12_000.0) - 64.8).abs() < 1e-12);
+    let (s, c) = (
+        law.thermal_state(12_000.0).unwrap(),
+        with(64.8, 0.0, 0.0, 0.0).unwrap().thermal_state(12_000.0).unwrap(),
+    );
+    assert!((s.total_heat_w - c.total_heat_w).abs() < 1e-9 * c.total_heat_w);
+    let negative = with(0.0, -30.0, 0.0, 10_000.0).unwrap();
+    assert_eq!(negative.config.extra_heat_at_w(12_000.0), 0.0);
+    let t0 = base.thermal_state(12_000.0).unwrap().total_heat_w;
+    assert_eq!(negative.thermal_state(12_000.0).unwrap().total_heat_w, t0);
+    // A law without its reference speed is refused by name.
+    match with(0.0, 30.0, 0.0, 0.0) {
+        Err(Error::Config { field, .. }) => assert_eq!(field, "unknown_heat_reference_rpm"),
+        other => panic!("{other:?}"),
+    }
+}

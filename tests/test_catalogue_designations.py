@@ -289,3 +289,39 @@ def test_presets_bearings_lists_the_families():
         assert f"\n  {series} " in out
     assert "HC prefix" in out and "6208-hybrid" in out
     assert "61808" not in out  # families, not every size
+
+
+# -- designations in a system description --------------------------------------------
+
+
+def _geometry(b: tb.Bearing) -> dict:
+    return {k: v for k, v in b.geometry.items() if isinstance(v, (int, float))}
+
+
+@pytest.mark.parametrize("text", ["7014C", "6310", "71914ACE/HCP4A"])
+def test_a_system_description_takes_a_designation(text):
+    """``[bearing] preset`` of a description file takes what
+    ``Bearing.preset`` takes: the same bearing, materials included."""
+    got = tb.Bearing.from_toml(f'[bearing]\npreset = "{text}"\n')
+    want = tb.Bearing.preset(text)
+    assert _geometry(got) == _geometry(want)
+    assert (got.ring_material.name, got.ball_material.name) == (
+        want.ring_material.name, want.ball_material.name,
+    )  # fmt: skip
+
+
+def test_explicit_keys_override_a_designation_and_a_preset_stays_built_in():
+    got = tb.Bearing.from_toml('[bearing]\npreset = "7014C"\nfree_contact_angle_deg = 25.0\n')
+    assert got.geometry["free_contact_angle_deg"] == pytest.approx(25.0, rel=1e-12)
+    assert got.geometry["ball_count"] == tb.Bearing.preset("7014C").geometry["ball_count"]
+    text = '[bearing]\npreset = "7009C-hybrid"\n'
+    assert _geometry(tb.Bearing.from_toml(text)) == _geometry(tb.Bearing.preset("7009C-hybrid"))
+
+
+def test_a_wrong_designation_in_a_file_is_named_with_its_line(tmp_path):
+    path = tmp_path / "system.toml"
+    path.write_text('name = "x"\n\n[bearing]\npreset = "7014X"\n')
+    with pytest.raises(tb.ConfigError) as e:
+        tb.Bearing.from_toml(str(path))
+    assert "system.toml:4: key bearing.preset" in str(e.value), str(e.value)
+    assert "nor a catalogue designation" in str(e.value) and "did you mean 7014C?" in str(e.value)

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import re
 import tomllib
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from importlib import resources
 from pathlib import Path
@@ -59,10 +59,51 @@ def read_text_file(path: str | Path) -> str:
     raise err
 
 
+#: Resolves a ``[bearing] preset`` name that is no built-in preset (a
+#: catalogue designation) to a native bearing, or raises ConfigError; set
+#: by the bearing catalogue (``set_catalogue_lookup``). None: the built-in
+#: presets only.
+_catalogue_lookup: Optional[Callable[[str], Any]] = None
+
+
+def set_catalogue_lookup(lookup: Optional[Callable[[str], Any]]) -> None:
+    """Install the resolver of catalogue designations (see
+    ``catalogue_bearings``)."""
+    global _catalogue_lookup
+    _catalogue_lookup = lookup
+
+
+def catalogue_bearings(text: str) -> Optional[dict[str, Any]]:
+    """The bearing a description's ``[bearing] preset`` names when it is
+    a catalogue designation rather than a built-in preset (``"7014C"``,
+    ``"6310"``): ``{name as written: native bearing}``, for the native
+    loader; None when the name is a built-in preset, is missing, or is no
+    designation either (the native loader then names it with its line)."""
+    try:
+        name = tomllib.loads(text).get("bearing", {}).get("preset")
+    except (tomllib.TOMLDecodeError, AttributeError):
+        return None
+    if not isinstance(name, str) or _catalogue_lookup is None:
+        return None
+    try:
+        _native.Bearing.preset(name)
+        return None
+    except Exception:  # noqa: BLE001 -- not a built-in preset: try the catalogue
+        pass
+    from .errors import ConfigError
+
+    try:
+        return {name: _catalogue_lookup(name)}
+    except ConfigError:
+        return None
+
+
 def load_config(path_or_text: str | Path) -> str:
     """Read a system description from a path (or take TOML text as is),
     check it on the Rust side and return the text. A ``ConfigError`` names
-    the file (when read from one), the line and the key at fault."""
+    the file (when read from one), the line and the key at fault. The
+    ``[bearing] preset`` takes a built-in preset or a catalogue designation
+    (as ``Bearing.preset`` does)."""
     text = str(path_or_text)
     p: Optional[Path] = None
     if "\n" not in text and "=" not in text:
@@ -71,7 +112,7 @@ def load_config(path_or_text: str | Path) -> str:
     try:
         with located_config_errors(p, text):
             tomllib.loads(text)
-            _native.check_config(text)
+            _native.check_config(text, catalogue_bearings(text))
     except Exception as e:
         add_preset_hint(e, text)
         raise
@@ -106,12 +147,27 @@ def add_preset_hint(error: BaseException, text: str) -> None:
             value = value[part]
     except (tomllib.TOMLDecodeError, KeyError, TypeError):
         return
-    hint = did_you_mean(value, known)
+    hint = _designation_hint(value) if key == "bearing.preset" else ""
+    hint = hint or did_you_mean(value, known)
     if hint:
         error.args = (f"{error}{hint}", *error.args[1:])
         loc = getattr(error, "location", None)
         if loc is not None:
             vars(error)["location"] = (f"{loc[0]}{hint}", *loc[1:])
+
+
+def _designation_hint(name: Any) -> str:
+    """Why ``name`` is no catalogue designation either (the catalogue's
+    own reason, with its guess), or "" without a catalogue."""
+    from .errors import ConfigError
+
+    if not isinstance(name, str) or _catalogue_lookup is None:
+        return ""
+    try:
+        _catalogue_lookup(name)
+    except ConfigError as e:
+        return "; nor a catalogue designation: " + str(e).split(": ", 1)[-1]
+    return ""
 
 
 def read_toml(text: str) -> dict:

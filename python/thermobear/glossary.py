@@ -474,7 +474,12 @@ _ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("viscous_heat_w", "W", "H_v", "heat of the viscous moment"),
     ("spin_heat_w", "W", "H_s", "spin friction heat"),
     ("churning_heat_w", "W", "H_d", "ball drag (churning) heat in the oil-air mixture"),
-    ("extra_heat_w", "W", "H_x", "extra heat at the bearing beyond the modelled friction"),
+    (
+        "extra_heat_w",
+        "W",
+        "H_x",
+        "extra heat at the bearing (a spindle: its front set) beyond the modelled friction",
+    ),
     (
         "unknown_heat_linear_w",
         "W",

@@ -1,6 +1,6 @@
 //! Bindings for materials, bearings and system descriptions.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -218,10 +218,13 @@ impl PyBearing {
         finish(name, "angular-contact", g, ring_material, ball_material)
     }
 
-    /// The bearing of a system description (TOML text).
+    /// The bearing of a system description (TOML text); `catalogue`:
+    /// bearings its `[bearing] preset` may name beyond the built-in presets
+    /// (name as written -> bearing).
     #[staticmethod]
-    fn from_toml(text: &str) -> PyResult<Self> {
-        let sys = SystemConfig::from_toml(text).py_err()?;
+    #[pyo3(signature = (text, catalogue=None))]
+    fn from_toml(text: &str, catalogue: Option<HashMap<String, PyRef<'_, PyBearing>>>) -> PyResult<Self> {
+        let sys = with_catalogue(SystemConfig::from_toml(text).py_err()?, catalogue);
         Ok(PyBearing {
             inner: sys.bearing().py_err()?,
         })
@@ -387,10 +390,20 @@ pub fn effects() -> Vec<(&'static str, &'static str, Vec<&'static str>)> {
         .collect()
 }
 
+/// `sys` with the caller's catalogue bearings (none: as it is).
+fn with_catalogue(sys: SystemConfig, catalogue: Option<HashMap<String, PyRef<'_, PyBearing>>>) -> SystemConfig {
+    match catalogue {
+        Some(c) => sys.with_catalogue(c.into_iter().map(|(k, b)| (k, b.inner.clone())).collect()),
+        None => sys,
+    }
+}
+
 /// Check a TOML system description; returns the section names present.
+/// `catalogue` as for `Bearing.from_toml`.
 #[pyfunction]
-pub fn check_config(text: &str) -> PyResult<Vec<String>> {
-    let sys = SystemConfig::from_toml(text).py_err()?;
+#[pyo3(signature = (text, catalogue=None))]
+pub fn check_config(text: &str, catalogue: Option<HashMap<String, PyRef<'_, PyBearing>>>) -> PyResult<Vec<String>> {
+    let sys = with_catalogue(SystemConfig::from_toml(text).py_err()?, catalogue);
     let mut s = Vec::new();
     if sys.bearing.is_some() {
         sys.bearing().py_err()?;

@@ -308,6 +308,10 @@ impl PySpindle {
         d.set_item("lubrication_factor_f0", p.lubrication_factor_f0)?;
         d.set_item("spin_friction", c.spin_friction_coefficient)?;
         d.set_item("load_friction_scale", c.load_friction_scale)?;
+        d.set_item("extra_heat_w", c.extra_heat_w)?;
+        d.set_item("unknown_heat_linear_w", c.unknown_heat_linear_w)?;
+        d.set_item("unknown_heat_quadratic_w", c.unknown_heat_quadratic_w)?;
+        d.set_item("unknown_heat_reference_rpm", c.unknown_heat_reference_rpm)?;
         d.set_item("heat_model", c.heat_model.name())?;
         d.set_item("lubrication", c.lubrication.name())?;
         d.set_item("churning_oil_fraction", c.churning_oil_fraction)?;
@@ -560,6 +564,9 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 /// Python dict: `heat_model` ("palmgren" | "skf"), `lubrication` (method;
 /// its defaults fill `lubrication_factor_f0` and `churning_oil_fraction`
 /// when not given), `load_friction_scale` (Palmgren's f1 times this),
+/// `extra_heat_w` (an extra heat at the front bearing set, W) and the
+/// speed law of an unknown heat source there (`unknown_heat_linear_w`,
+/// `unknown_heat_quadratic_w`, `unknown_heat_reference_rpm`),
 /// `skf_series`, `sliding_friction_ehl`,
 /// `replenishment_krs`, `seal_moment_n_m`.
 #[derive(FromPyObject)]
@@ -569,6 +576,14 @@ pub struct SpindleHeatArgs {
     lubrication: Option<String>,
     lubrication_factor_f0: Option<f64>,
     load_friction_scale: Option<f64>,
+    #[pyo3(default)]
+    extra_heat_w: Option<f64>,
+    #[pyo3(default)]
+    unknown_heat_linear_w: Option<f64>,
+    #[pyo3(default)]
+    unknown_heat_quadratic_w: Option<f64>,
+    #[pyo3(default)]
+    unknown_heat_reference_rpm: Option<f64>,
     churning_oil_fraction: Option<f64>,
     skf_series: Option<String>,
     sliding_friction_ehl: Option<f64>,
@@ -613,6 +628,18 @@ impl SpindleHeatArgs {
         }
         if let Some(s) = self.load_friction_scale {
             cfg.load_friction_scale = crate::error::in_range("load_friction_scale", s, 0.0, 100.0)?;
+        }
+        if let Some(e) = self.extra_heat_w {
+            cfg.extra_heat_w = e;
+        }
+        if let Some(a) = self.unknown_heat_linear_w {
+            cfg.unknown_heat_linear_w = a;
+        }
+        if let Some(b) = self.unknown_heat_quadratic_w {
+            cfg.unknown_heat_quadratic_w = b;
+        }
+        if let Some(r) = self.unknown_heat_reference_rpm {
+            cfg.unknown_heat_reference_rpm = r;
         }
         if let Some(s) = &self.skf_series {
             cfg.skf.series = Some(SkfSeries::from_name(s)?);

@@ -181,4 +181,14 @@ mod tests {
         let e = Spindle::new(skf).unwrap_err().to_string();
         assert!(e.contains("load_friction_scale") && e.contains("palmgren"), "{e}");
     }
+
+    #[test]
+    fn extra_heat_defaults_to_zero() {
+        // A stored configuration without the field loads without extra heat.
+        let cfg = SpindleConfig::preset("seed-ceramic-spindle").unwrap();
+        let mut v: serde_json::Value = serde_json::from_str(&cfg.to_json().unwrap()).unwrap();
+        v.as_object_mut().unwrap().remove("extra_heat_w");
+        let back = SpindleConfig::from_json(&v.to_string()).unwrap();
+        assert_eq!((back.extra_heat_w, back), (0.0, cfg));
+    }
 }

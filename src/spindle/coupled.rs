@@ -104,6 +104,24 @@ pub struct SpindleConfig {
     /// heat model only). Stored files without it load with 1.
     #[serde(default = "unit_scale")]
     pub load_friction_scale: f64,
+    /// An extra heat at the front bearing set \[W\] (>= 0; default 0):
+    /// half on each front bearing, added to its rolling heat and so split
+    /// like it (Burton-Staph, A-27). A known heat the friction model leaves
+    /// out. Stored files without it load with 0.
+    #[serde(default)]
+    pub extra_heat_w: f64,
+    /// The speed law of an unknown heat source at the front set, added to
+    /// `extra_heat_w`: `max(0, a x + b x^2)`, `x = n / n_ref`, `a` this
+    /// \[W\] (default 0; a diagnosis' unknown heat source).
+    #[serde(default)]
+    pub unknown_heat_linear_w: f64,
+    /// `b` of the unknown heat source's law \[W\] (default 0).
+    #[serde(default)]
+    pub unknown_heat_quadratic_w: f64,
+    /// `n_ref` of the unknown heat source's law \[rpm\] (> 0 when a
+    /// coefficient is not 0; default 0).
+    #[serde(default)]
+    pub unknown_heat_reference_rpm: f64,
     /// Temperature at which the spindle was assembled (zero thermal offsets) \[C\].
     pub assembly_temperature_c: f64,
     /// Effects (high-speed bearing terms, thermal expansion by part,
@@ -148,6 +166,47 @@ pub const SPINDLE_PRESETS: [(&str, &str); 3] = [
 ];
 
 impl SpindleConfig {
+    /// The extra heat at the front set at `speed_rpm` \[W\]:
+    /// `extra_heat_w` plus the unknown heat source's law, `max(0, a x +
+    /// b x^2)` with `x = n / n_ref` (none without a reference speed).
+    pub fn extra_heat_at_w(&self, speed_rpm: f64) -> f64 {
+        let r = self.unknown_heat_reference_rpm;
+        let law = if r > 0.0 {
+            let x = speed_rpm / r;
+            (self.unknown_heat_linear_w * x + self.unknown_heat_quadratic_w * x * x).max(0.0)
+        } else {
+            0.0
+        };
+        self.extra_heat_w + law
+    }
+
+    /// The unknown heat source's law: finite coefficients within
+    /// +-[`MAX_EXTRA_HEAT_W`], and a reference speed > 0 when one is not 0.
+    fn check_unknown_heat(&self) -> Result<()> {
+        in_range(
+            "unknown_heat_linear_w",
+            self.unknown_heat_linear_w,
+            -MAX_EXTRA_HEAT_W,
+            MAX_EXTRA_HEAT_W,
+        )?;
+        in_range(
+            "unknown_heat_quadratic_w",
+            self.unknown_heat_quadratic_w,
+            -MAX_EXTRA_HEAT_W,
+            MAX_EXTRA_HEAT_W,
+        )?;
+        non_negative("unknown_heat_reference_rpm", self.unknown_heat_reference_rpm)?;
+        let law = self.unknown_heat_linear_w != 0.0 || self.unknown_heat_quadratic_w != 0.0;
+        if law && self.unknown_heat_reference_rpm <= 0.0 {
+            return Err(Error::config(
+                "unknown_heat_reference_rpm",
+                self.unknown_heat_reference_rpm,
+                "a speed > 0 [rpm]: the law's coefficients are its heat at x = n / n_ref",
+            ));
+        }
+        Ok(())
+    }
+
     /// The preset spindle `name` (case-insensitive; the names of
     /// [`SPINDLE_PRESETS`], as Python's `tb.Spindle.preset`).
     pub fn preset(name: &str) -> Result<Self> {
@@ -214,6 +273,10 @@ impl SpindleConfig {
             radial_load_n: 0.0,
             spin_friction_coefficient: DEFAULT_SPIN_FRICTION_COEFFICIENT,
             load_friction_scale: 1.0,
+            extra_heat_w: 0.0,
+            unknown_heat_linear_w: 0.0,
+            unknown_heat_quadratic_w: 0.0,
+            unknown_heat_reference_rpm: 0.0,
             assembly_temperature_c: ambient,
             effects: EffectSet::all().without(Effect::UnbalancedMagneticPull),
             magnetic_pull: Some(magnetic_pull),
@@ -316,6 +379,19 @@ impl SpindleState {
     }
 }
 
+/// The largest extra heat of [`SpindleConfig::extra_heat_w`] \[W\]: ten
+/// times the heat of the seed spindle's four bearings at 18,000 rpm.
+pub const MAX_EXTRA_HEAT_W: f64 = 1e4;
+
+/// `report` with `extra_w` added to its rolling heat (so to its total) and
+/// split again like it.
+fn with_extra_heat(report: &mut BearingHeatReport, extra_w: f64) {
+    if extra_w > 0.0 {
+        report.heat.rolling_w += extra_w;
+        report.split = report.heat.split();
+    }
+}
+
 /// Working state carried between evaluations (warm starts).
 #[derive(Debug, Clone, Default)]
 struct Warm {
@@ -348,6 +424,8 @@ impl Spindle {
             ));
         }
         in_range("churning_oil_fraction", config.churning_oil_fraction, 0.0, 1.0)?;
+        in_range("extra_heat_w", config.extra_heat_w, 0.0, MAX_EXTRA_HEAT_W)?;
+        config.check_unknown_heat()?;
         if let Some(s) = &config.oil_supply {
             s.validate()?;
         }
@@ -725,12 +803,16 @@ impl Spindle {
         let p = &self.config.params;
         let oil = |node: usize| oil_temperature_c(self.config.effects, p.oil_air_temperature_c, t.map(|t| t[node]));
         let (of, or) = (oil(n.front_balls), oil(n.rear_balls));
-        let heat = [
+        let mut heat = [
             self.row_heat(&front.bearings[0], &p.front_bearing, of)?,
             self.row_heat(&front.bearings[1], &p.front_bearing, of)?,
             self.row_heat(&rear.bearings[0], &p.rear_bearing, or)?,
             self.row_heat(&rear.bearings[1], &p.rear_bearing, or)?,
         ];
+        let extra_w = self.config.extra_heat_at_w(speed_rpm);
+        for h in heat.iter_mut().take(2) {
+            with_extra_heat(h, 0.5 * extra_w);
+        }
         let mut s = vec![0.0; n.network.nodes().len()];
         let motor_w = self.motor_sources(speed_rpm, &mut s);
         for (k, h) in heat.iter().enumerate() {

@@ -169,10 +169,13 @@ class Bearing:
 
     @classmethod
     def from_toml(cls, path_or_text: str) -> "Bearing":
-        """The ``[bearing]`` of a system description file or text."""
-        from ..config import load_config
+        """The ``[bearing]`` of a system description file or text; its
+        ``preset`` takes a built-in preset or a catalogue designation (as
+        [`preset`][thermobear.Bearing.preset]), explicit keys override it."""
+        from ..config import catalogue_bearings, load_config
 
-        return cls._checked(_native.Bearing.from_toml(load_config(path_or_text)))
+        text = load_config(path_or_text)
+        return cls._checked(_native.Bearing.from_toml(text, catalogue_bearings(text)))
 
     @classmethod
     def _checked(cls, native: Any) -> "Bearing":

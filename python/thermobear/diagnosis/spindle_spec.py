@@ -39,7 +39,8 @@ import numpy as np
 from .._validate import did_you_mean
 from ..errors import ConfigError, ThermobearError
 from ..spindle.description import PULL_EFFECT
-from ..spindle.spindle import Spindle, _state_row
+from ..spindle.spindle import MAX_EXTRA_HEAT_W, Spindle, _state_row
+from ..thermal.heat_law import HEAT_LAW_OPTIONS, pop_heat_law
 from ..thermal.oil_supply import SUPPLY_OPTIONS
 from .candidates import (
     Candidate,
@@ -222,6 +223,8 @@ _OPTIONS = (
     "heat_model",
     "lubrication",
     "churning_oil_fraction",
+    "extra_heat_w",
+    *HEAT_LAW_OPTIONS,
     *SUPPLY_OPTIONS,
     *UNSTATED_INPUTS,
 )
@@ -290,6 +293,8 @@ class SpindleModelSpec(ModelSpec):
             "runout_um": 0.0,
             "heat_model": str(spindle.assumptions.get("heat_model", "palmgren")),
             "lubrication": None,
+            "extra_heat_w": float(spindle.assumptions.get("extra_heat_w", 0.0)),
+            **{k: float(spindle.assumptions.get(k, 0.0)) for k in HEAT_LAW_OPTIONS},
             **_own_drag(spindle),
             **dict.fromkeys(UNSTATED_INPUTS),
         }
@@ -380,7 +385,9 @@ class SpindleModelSpec(ModelSpec):
         """The [`Spindle`][thermobear.Spindle] of this configuration at a
         stated preload (scaled by
         [`effective_preload_n`][thermobear.SpindleModelSpec.effective_preload_n]);
-        the drag settings not set (None) stay the spindle's own."""
+        the drag settings not set (None) stay the spindle's own; the extra
+        heat at the front set and the unknown heat source's speed law
+        (``unknown_heat_*``) are the spindle's inputs of those names."""
         o = self.options
         # the spindle's own spring rate is kept as stored (N/um -> N/m is not
         # exact to the last bit); another one is set
@@ -397,6 +404,8 @@ class SpindleModelSpec(ModelSpec):
             effects=list(self.effects),
             spin_friction_coefficient=float(o["spin_friction_coefficient"]),
             heat_model=str(o["heat_model"]),
+            extra_heat_w=float(o["extra_heat_w"]),
+            **{k: float(o[k]) for k in HEAT_LAW_OPTIONS},
             **{k: o[k] for k in drag if o[k] is not None},
         )
 
@@ -679,6 +688,12 @@ def _check_options(o: dict) -> None:
         )
     for k in UNSTATED_INPUTS:
         _check_unstated(k, o[k])
+    q = o["extra_heat_w"]
+    if not (isinstance(q, (int, float)) and np.isfinite(q) and 0.0 <= q <= MAX_EXTRA_HEAT_W):
+        raise ConfigError(
+            f"invalid extra_heat_w = {q!r}: a heat in [0, {MAX_EXTRA_HEAT_W:g}] W at the front set"
+        )
+    pop_heat_law({k: o[k] for k in HEAT_LAW_OPTIONS})
 
 
 def _has_pull_data(spindle: Spindle) -> bool:
@@ -725,6 +740,7 @@ def _spindle_candidate_list(
     out += _unbalance_candidates(opts)
     out += _preload_scale_and_runout_candidates(opts, allq)
     out += _unstated_candidates(model, allq)
+    out.append(_extra_heat_candidate(opts, allq))
     out += heat_model_candidates(opts, allq, skf_inputs=False)
     out += supply_candidates(opts, allq)
     out += sensor_offset_candidates(quantities, SPINDLE_QUANTITIES)
@@ -747,6 +763,24 @@ def _preload_scale_and_runout_candidates(opts: dict, allq: tuple) -> list[Candid
         (_VIB,), option="runout_um", role="measurement",
     )  # fmt: skip
     return [scale, runout]
+
+
+#: Bounds of the spindle's extra heat at the front set [W]: twice the
+#: single bearing's (0-100 W), one such heat per front bearing.
+EXTRA_HEAT_BOUNDS_W = (0.0, 200.0)
+
+
+def _extra_heat_candidate(opts: dict, allq: tuple) -> Candidate:
+    """An extra heat at the front bearing set, split like rolling heat
+    (the spindle's carrier of the unknown heat source, as ``extra_heat_w``
+    is the bearing's)."""
+    lo, hi = EXTRA_HEAT_BOUNDS_W
+    null = float(opts["extra_heat_w"])
+    return Candidate(
+        "extra_heat_w", "parameter", "model", "extra_heat_w", "W", lo, max(hi, null), null,
+        "extra heat at the front bearing set (e.g. magnetic-pull friction), split like "
+        "rolling heat", allq, option="extra_heat_w", role="effect",
+    )  # fmt: skip
 
 
 #: What each unstated input is, for its candidate.

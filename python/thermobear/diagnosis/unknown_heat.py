@@ -1,5 +1,6 @@
 """The unknown term of an "unresolved" verdict shaped by physics: an
-unknown heat source at the bearing with its own speed law,
+unknown heat source at the bearing (at a spindle's front bearing set) with
+its own speed law,
 
     H(n) = max(0, a x + b x^2),    x = n / n_ref,
 
@@ -49,9 +50,12 @@ unknown_heat_w = heat_law_w
 
 
 def supports_unknown_heat(spec: Any) -> bool:
-    """Whether a model spec carries the unknown heat source (a bearing
-    spec: its options take the law)."""
-    return hasattr(spec, "bearing") and hasattr(spec, "thermal_options")
+    """Whether a model spec carries the unknown heat source: a bearing
+    spec (its thermal options take the law) or a spindle spec (the law's
+    heat goes to the front bearing set, ``extra_heat_w`` of the spindle)."""
+    if hasattr(spec, "bearing") and hasattr(spec, "thermal_options"):
+        return True
+    return hasattr(spec, "configured") and all(k in spec.options for k in HEAT_LAW_OPTIONS)
 
 
 def unknown_heat_candidates(quantities: Sequence[str]) -> tuple[Candidate, Candidate, Candidate]:

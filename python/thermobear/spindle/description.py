@@ -303,12 +303,36 @@ def _bearing_of(bearing: dict[str, Any], which: str, named: bool) -> Any:
 BASE_BEARING = "7009C"
 
 
+#: The spindle inputs of an extra heat at the front set (no part holds them).
+EXTRA_HEAT_KEYS = (
+    "extra_heat_w",
+    "unknown_heat_linear_w",
+    "unknown_heat_quadratic_w",
+    "unknown_heat_reference_rpm",
+)
+
+
+def _no_extra_heat(cfg: dict[str, Any]) -> None:
+    """A spindle with an extra heat at its front set (a calibrated
+    member's unknown heat source) has no description: refused by name, so
+    that a file never drops it silently."""
+    for k in EXTRA_HEAT_KEYS:
+        v = float(cfg.get(k) or 0.0)
+        if v != 0.0 and k != "unknown_heat_reference_rpm":
+            raise ConfigError(
+                f"invalid {k} = {v:g}: a spindle with an extra heat at its front bearing set "
+                "(an unknown heat source) has no description file or parts; describe the "
+                "spindle without it and give the heat to the call (Spindle.with_options)"
+            )
+
+
 def describe(native: Any, named: bool = True) -> dict[str, Any]:
     """The description (``Spindle`` keywords -> parts) of a native spindle;
     ``named``: bearings by preset name only (a description file's rule),
     else a bearing that is no preset comes back as a ``Bearing``."""
     cfg = json.loads(native.config_json())
     a = dict(native.assumptions())
+    _no_extra_heat(cfg)
     params = cfg["params"]
     values: dict[str, dict[str, Any]] = {k: {} for k in PART_TYPES}
     for key, part, field, exponent in PARAM_FIELDS:

@@ -13,6 +13,7 @@ from .. import _validate as val
 from .._deprecation import renamed_kwargs, warn_renamed
 from .._names import spindle_node, temperature_column
 from .._types import PreloadKind
+from ..thermal.heat_law import HEAT_LAW_OPTIONS, pop_heat_law
 from ..thermal.oil_supply import SUPPLY_OPTIONS
 from .parts import Cooling, Housing, Lubrication, Motor, Preload, Shaft, ToolLoad
 
@@ -117,7 +118,13 @@ class Spindle:
         ``churning_oil_fraction`` when they are not given),
         ``lubrication_factor_f0``, ``load_friction_scale`` (Palmgren's
         load-friction factor f1 times this, default 1; the "palmgren" heat
-        model only), ``churning_oil_fraction`` (ball-drag oil
+        model only), ``extra_heat_w`` (an extra heat at the front bearing
+        set [W], half on each front bearing, split like rolling heat;
+        default 0) and an unknown heat source's speed law added to it,
+        ``max(0, a x + b x^2)`` with ``x = n / n_ref``
+        (``unknown_heat_linear_w`` a, ``unknown_heat_quadratic_w`` b [W],
+        ``unknown_heat_reference_rpm`` n_ref; a diagnosis' unknown member),
+        ``churning_oil_fraction`` (ball-drag oil
         volume fraction, 0..1), ``skf_series``, ``sliding_friction_ehl``,
         ``replenishment_krs``, ``seal_moment_n_m`` (as for
         [`thermobear.thermal_state`][thermobear.thermal_state]). ``spin_friction_coefficient``:
@@ -387,12 +394,18 @@ class Spindle:
         return pl.DataFrame([row])
 
 
+#: The largest extra heat at the front bearing set [W] (the core's limit:
+#: ten times the seed spindle's bearing heat at 18,000 rpm).
+MAX_EXTRA_HEAT_W = 1e4
+
 #: Heat-model keywords of ``Spindle.with_options``.
 SPINDLE_HEAT_OPTIONS = (
     "heat_model",
     "lubrication",
     "lubrication_factor_f0",
     "load_friction_scale",
+    "extra_heat_w",
+    *HEAT_LAW_OPTIONS,
     "churning_oil_fraction",
     "skf_series",
     "sliding_friction_ehl",
@@ -421,6 +434,11 @@ def _heat_args(heat: dict[str, Any]) -> Optional[dict[str, Any]]:
     for k in ("lubrication_factor_f0", "load_friction_scale", "churning_oil_fraction",
               "sliding_friction_ehl", "replenishment_krs", "seal_moment_n_m"):  # fmt: skip
         out[k] = val.optional_real(k, out[k], 0.0)
+    out["extra_heat_w"] = val.optional_real("extra_heat_w", out["extra_heat_w"], 0.0,
+                                            MAX_EXTRA_HEAT_W)  # fmt: skip
+    law = pop_heat_law({k: out[k] for k in HEAT_LAW_OPTIONS})  # checked: a reference speed
+    for k in HEAT_LAW_OPTIONS:
+        out[k] = law.get(k)
     for k in ("heat_model", "lubrication", "skf_series"):
         out[k] = None if out[k] is None else val.text(k, out[k])
     out["oil_supply"] = supply_dict(heat)

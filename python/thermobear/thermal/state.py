@@ -392,8 +392,8 @@ def thermal_state(
     An extra heat with its own speed law: ``unknown_heat_linear_w``,
     ``unknown_heat_quadratic_w`` [W] and ``unknown_heat_reference_rpm``
     (``max(0, a x + b x^2)``, ``x = speed_rpm / reference``, added to
-    ``extra_heat_w``; the unknown heat source of a diagnosis).
-    The defaults reproduce the baseline. Returns a
+    ``extra_heat_w``; the unknown heat source of a diagnosis). The
+    defaults reproduce the baseline. Returns a
     [`ThermalState`][thermobear.ThermalState]. Raises ``ThermalRunawayError`` when a node passes
     the lubricant's highest temperature or heat, temperatures and contact
     loads grow together, ``ConvergenceError`` when the fixed point stalls.
@@ -401,11 +401,12 @@ def thermal_state(
     Any object with a ``_thermal_state(**kwargs)`` method (a
     [`Spindle`][thermobear.Spindle]) is dispatched to it with ``speed_rpm``, the
     loads and ``effects`` that were given, and the remaining keyword
-    arguments (for a spindle: ``preload_n``, ``preload_kind``). A calibrated
+    arguments (for a spindle: ``preload_n``, ``preload_kind``; its extra
+    heat and speed law act at the front bearing set). A calibrated
     model ([`CalibratedModel`][thermobear.CalibratedModel]) stands for its machine."""
     if hasattr(bearing, "_thermal_state") and not isinstance(bearing, Bearing):
         given = {"axial_n": axial_n, "radial_n": radial_n, "effects": effects,
-                 "lubrication": lubrication,
+                 "lubrication": lubrication, "extra_heat_w": extra_heat_w or None,
                  "heat_model": None if heat_model == "palmgren" else heat_model,
                  "lubrication_factor_f0": lubrication_factor_f0,
                  "spin_friction_coefficient": spin_friction_coefficient,
