@@ -98,6 +98,7 @@ from .spindle import (
     Motor,
     Preload,
     Shaft,
+    ShaftSegment,
     Spindle,
     ToolLoad,
     compensation_preload,
@@ -193,6 +194,7 @@ __all__ = [
     # spindle
     "Spindle",
     "Shaft",
+    "ShaftSegment",
     "BearingSet",
     "Preload",
     "Housing",

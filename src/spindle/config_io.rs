@@ -83,6 +83,18 @@ pub fn check_params(p: &SpindleParams) -> Result<()> {
     if let Some(h) = p.outer_ring_contact_w_m2k {
         positive("outer_ring_contact_w_m2k", h)?;
     }
+    for [length, outer, inner] in p.shaft_segments_m.iter().flatten() {
+        positive("shaft_segment_length_m", *length)?;
+        positive("shaft_segment_outer_diameter_m", *outer)?;
+        in_range("shaft_segment_bore_m", *inner, 0.0, *outer)?;
+        if *inner >= *outer {
+            return Err(Error::config(
+                "shaft_segment_bore_m",
+                *inner,
+                "must be below the segment's outer diameter",
+            ));
+        }
+    }
     positive("jacket_wetted_fraction", p.jacket_wetted_fraction)?;
     in_range("jacket_wetted_fraction", p.jacket_wetted_fraction, 0.0, 1.0)?;
     check_fits(p)
@@ -180,6 +192,28 @@ mod tests {
         skf.load_friction_scale = 2.0;
         let e = Spindle::new(skf).unwrap_err().to_string();
         assert!(e.contains("load_friction_scale") && e.contains("palmgren"), "{e}");
+    }
+
+    #[test]
+    fn shaft_segments_are_optional_and_checked() {
+        // Without segments nothing is written (stored files stay as they were).
+        let cfg = SpindleConfig::preset("seed-ceramic-spindle").unwrap();
+        assert!(!cfg.to_json().unwrap().contains("shaft_segments_m"));
+        let mut with = cfg.clone();
+        with.params.shaft_segments_m = Some(vec![[0.05, 0.06, 0.02], [0.3, 0.045, 0.018]]);
+        let back = SpindleConfig::from_json(&with.to_json().unwrap()).unwrap();
+        assert_eq!(back, with);
+        assert!(check_params(&with.params).is_ok());
+        for (bad, field) in [
+            ([0.0, 0.06, 0.02], "shaft_segment_length_m"),
+            ([0.05, -0.06, 0.0], "shaft_segment_outer_diameter_m"),
+            ([0.05, 0.06, 0.06], "shaft_segment_bore_m"),
+        ] {
+            let mut p = cfg.params.clone();
+            p.shaft_segments_m = Some(vec![bad]);
+            let e = check_params(&p).unwrap_err().to_string();
+            assert!(e.contains(field), "{e}");
+        }
     }
 
     #[test]

@@ -397,6 +397,13 @@ pub struct SpindleParams {
     /// configurations without it load with None.
     #[serde(default)]
     pub outer_ring_contact_w_m2k: Option<f64>,
+    /// The shaft of the rotor model as (length, outer diameter, inner
+    /// diameter) \[m\] segments from the tool nose, in order; None: the
+    /// layout derived from the bearing bores and spans. Only the rotor
+    /// (its beam elements) reads it; the thermal network lumps the shaft.
+    /// Stored configurations without it load with None.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shaft_segments_m: Option<Vec<[f64; 3]>>,
     /// Cooling-water temperature, a boundary node \[C\] (seed B: 18).
     pub water_temperature_c: f64,
     /// Ambient air temperature, a boundary node \[C\] (seed B: 25).
@@ -462,6 +469,7 @@ impl SpindleParams {
             jacket_wetted_fraction: 0.5,
             stator_contact_w_m2k: 1000.0,
             outer_ring_contact_w_m2k: None,
+            shaft_segments_m: None,
             water_temperature_c: 18.0,
             ambient_temperature_c: 25.0,
             oil_air_temperature_c: 25.0,

@@ -20,6 +20,7 @@ from .parts import (
     Motor,
     Preload,
     Shaft,
+    ShaftSegment,
     ToolLoad,
 )
 from .spindle import SEED_B_SPRING_RATE_N_PER_UM, Spindle
@@ -34,6 +35,7 @@ __all__ = [
     "Motor",
     "Preload",
     "Shaft",
+    "ShaftSegment",
     "Spindle",
     "ToolLoad",
     "compensation_preload",

@@ -38,6 +38,7 @@ from .parts import (
     Motor,
     Preload,
     Shaft,
+    ShaftSegment,
 )
 
 #: The preset whose configuration fills what a description leaves out.
@@ -137,7 +138,7 @@ def build_native(
         # seed's motor on the seed's shaft; another machine has none
         cfg["magnetic_pull"] = None
     try:
-        return _native.Spindle.from_config(
+        native = _native.Spindle.from_config(
             json.dumps(cfg),
             name,
             front_bearing=f.bearing._b,
@@ -147,6 +148,11 @@ def build_native(
         )
     except ConfigError as e:
         raise _described_error(e) from None
+    if p["shaft"].segments:  # the rotor's own shaft: checked now, not at first use
+        from .rotor_layout import rotor_layout
+
+        rotor_layout(native)
+    return native
 
 
 _NATIVE_ERROR = re.compile(r"^invalid (\w+) = ([^:]+): (.*)$", re.S)
@@ -210,6 +216,11 @@ def _put_params(params: dict[str, Any], parts: dict[str, Any]) -> None:
     for key, part, field, exponent in PARAM_FIELDS:
         params[key] = to_si(getattr(parts[part], field), exponent)
     params["outer_ring_contact_w_m2k"] = parts["housing"].outer_ring_contact_w_per_m2_k
+    segments = parts["shaft"].segments
+    params["shaft_segments_m"] = [
+        [to_si(g.length_mm, -3), to_si(g.outer_diameter_mm, -3), to_si(g.bore_mm, -3)]
+        for g in segments
+    ] or None
 
 
 def _put_pull(holder: dict[str, Any], pull: MagneticPull) -> None:
@@ -344,6 +355,9 @@ def describe(native: Any, named: bool = True) -> dict[str, Any]:
     values["housing"]["assembly_temperature_c"] = cfg["assembly_temperature_c"]
     values["housing"]["outer_ring_contact_w_per_m2_k"] = params.get("outer_ring_contact_w_m2k")
     values["tool"]["radial_load_n"] = cfg["radial_load_n"]
+    values["shaft"]["segments"] = tuple(
+        ShaftSegment(*(from_si(x, -3) for x in seg)) for seg in params.get("shaft_segments_m") or ()
+    )
     lub = values["lubrication"]
     lub.update(
         method=a["lubrication"], lubricant=params["lubricant"]["name"],
@@ -379,8 +393,8 @@ def _describe_pull(holder: dict[str, Any]) -> MagneticPull:
 
 
 # -- TOML ------------------------------------------------------------------------
-def _table(header: str, items: Mapping[str, Any]) -> list[str]:
-    lines = [f"[{header}]"]
+def _table(header: str, items: Mapping[str, Any], array: bool = False) -> list[str]:
+    lines = [f"[[{header}]]" if array else f"[{header}]"]
     lines += [f"{k} = {toml_value(v)}" for k, v in items.items() if v is not None]
     return lines + [""]
 
@@ -391,7 +405,11 @@ def to_toml(native: Any) -> str:
     top = {"name": d["name"], "effects": d.get("effects")}
     lines = ["# A thermobear spindle description (thermobear.Spindle.from_toml).", ""]
     lines += _table("spindle", top)
-    lines += _table("spindle.shaft", vars(d["shaft"]))
+    shaft = dict(vars(d["shaft"]))
+    segments = shaft.pop("segments")
+    lines += _table("spindle.shaft", shaft)
+    for seg in segments:
+        lines += _table("spindle.shaft.segment", vars(seg), array=True)
     for which in BEARING_TABLES:
         lines += _table(f"spindle.{which}", {"bearing": d[which], "arrangement": "DB", "rows": 2})
     motor = dict(vars(d["motor"]))
@@ -454,7 +472,27 @@ def parse_description(text: str) -> dict[str, Any]:
             if key == "motor" and "magnetic_pull" in table:
                 pull = _table_of(table, "magnetic_pull", "spindle.motor")
                 table["magnetic_pull"] = _located("spindle.motor.magnetic_pull", MagneticPull, pull)
+            if key == "shaft":
+                table = _shaft_table(table)
             out[key] = _located(f"spindle.{key}", kind, table)
+    return out
+
+
+def _shaft_table(table: dict[str, Any]) -> dict[str, Any]:
+    """The ``[spindle.shaft]`` keywords with its ``[[spindle.shaft.segment]]``
+    tables read as ``segments`` (a ``segments`` key itself is unknown)."""
+    out = dict(table)
+    if "segments" in out:
+        raise ConfigError(
+            "invalid key = 'segments': unknown in [spindle.shaft]; give each step as a "
+            "[[spindle.shaft.segment]] table"
+        )
+    segs = out.pop("segment", [])
+    if not isinstance(segs, list) or not all(isinstance(g, dict) for g in segs):
+        raise ConfigError(
+            "invalid key = 'segment': must be tables [[spindle.shaft.segment]] in [spindle.shaft]"
+        )
+    out["segments"] = tuple(_located("spindle.shaft.segment", ShaftSegment, g) for g in segs)
     return out
 
 

@@ -41,18 +41,52 @@ ANY = (-val.INF, val.INF, False)
 
 
 @dataclass(frozen=True)
+class ShaftSegment:
+    """One cylindrical step of the shaft: ``length_mm`` long, of outer
+    diameter ``outer_diameter_mm`` and bore ``bore_mm`` (0: solid)."""
+
+    length_mm: float
+    outer_diameter_mm: float
+    bore_mm: float = 0.0
+
+    def __post_init__(self) -> None:
+        _check_reals(self, {"length_mm": POS, "outer_diameter_mm": POS,
+                            "bore_mm": NONNEG})  # fmt: skip
+        if self.bore_mm >= self.outer_diameter_mm:
+            raise val.fail("bore_mm", self.bore_mm,
+                           f"below the outer diameter ({self.outer_diameter_mm:g} mm)")  # fmt: skip
+
+
+@dataclass(frozen=True)
 class Shaft:
     """The shaft as the model has it: the rotor centre ``front_span_mm``
     behind the front pair centre and ``rear_span_mm`` ahead of the rear pair
     centre, the nose (tool side) ``nose_length_mm`` in front of the front
-    pair; its journals have the bearings' bores."""
+    pair; its journals have the bearings' bores. ``segments``: the shaft's
+    own steps from the nose, in order
+    ([`ShaftSegment`][thermobear.ShaftSegment]s; empty: a
+    layout derived from the bores and spans); the rotor model builds its
+    beam elements from them, each bearing row seated on a step of its bore
+    (the thermal network lumps the shaft either way)."""
 
     front_span_mm: float = 120.0
     rear_span_mm: float = 120.0
     nose_length_mm: float = 60.0
+    segments: tuple[ShaftSegment, ...] = ()
 
     def __post_init__(self) -> None:
         _check_reals(self, {"front_span_mm": POS, "rear_span_mm": POS, "nose_length_mm": NONNEG})
+        segs = self.segments
+        if isinstance(segs, (str, bytes)) or not hasattr(segs, "__iter__"):
+            raise val.fail("segments", segs, "a sequence of thermobear.spindle.ShaftSegment")
+        out = []
+        for i, seg in enumerate(segs):
+            if isinstance(seg, dict):
+                seg = ShaftSegment(**seg)
+            if not isinstance(seg, ShaftSegment):
+                raise val.fail(f"segments[{i}]", seg, "a thermobear.spindle.ShaftSegment")
+            out.append(seg)
+        object.__setattr__(self, "segments", tuple(out))
 
 
 @dataclass(frozen=True)

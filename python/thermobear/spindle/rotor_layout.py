@@ -14,6 +14,11 @@ rear bore, two widths long); rear end 20 mm long (the rear bore - 5 mm). A
 drawbar bore of 0.4 rear bores runs behind the nose. The motor rotor core
 (its diameter and length, on the motor seat) and the seed's tool holder are
 rigid disks.
+
+A shaft described by its own segments (``Shaft.segments``) replaces these
+steps: its steps from the nose, checked to reach past the rear pair and to
+seat each pair on steps of its bore; the motor core sits on the largest
+step under it.
 """
 
 from __future__ import annotations
@@ -59,19 +64,17 @@ def rotor_layout(native: Any) -> dict[str, Any]:
             "the motor rotor core overlaps a bearing seat: lengthen the spans "
             "(shaft.front_span_mm, shaft.rear_span_mm) or shorten the core",
         )  # fmt: skip
-    seat, bore = d_f + SEAT_STEP_M, 0.4 * d_r
+    own = p.get("shaft_segments_m")
+    if own:
+        seats = [("front", c_f, w_f, d_f), ("rear", c_r, w_r, d_r)]
+        steps, seat = _own_steps(own, seats, core)
+    else:
+        steps, seat = _derived_steps(c_f, w_f, d_f, c_r, w_r, d_r)
     if p["rotor_diameter_m"] <= seat:
         raise _fail(
             "motor.rotor_diameter_mm", p["rotor_diameter_m"] * 1e3,
             f"must exceed the motor seat on the shaft ({seat * 1e3:g} mm)",
         )  # fmt: skip
-    steps = [
-        (c_f - w_f, d_f + NOSE_STEP_M, 2.0 * d_f / 3.0),
-        (2.0 * w_f, d_f, bore),
-        ((c_r - w_r) - (c_f + w_f), seat, bore),
-        (2.0 * w_r, d_r, bore),
-        (REAR_END_LENGTH_M, d_r - REAR_END_STEP_M, bore),
-    ]
     return {
         "sections_m": [s for s in steps if s[0] > 0.0],
         "front_rows_m": [c_f - w_f / 2.0, c_f + w_f / 2.0],
@@ -83,3 +86,58 @@ def rotor_layout(native: Any) -> dict[str, Any]:
         "front_bearing_json": json.dumps(front),
         "rear_bearing_json": json.dumps(rear),
     }
+
+
+def _derived_steps(
+    c_f: float, w_f: float, d_f: float, c_r: float, w_r: float, d_r: float
+) -> tuple[list[tuple[float, float, float]], float]:
+    """The steps of the layout derived from the bores (module docstring)
+    and the motor seat's diameter [m]."""
+    seat, bore = d_f + SEAT_STEP_M, 0.4 * d_r
+    steps = [
+        (c_f - w_f, d_f + NOSE_STEP_M, 2.0 * d_f / 3.0),
+        (2.0 * w_f, d_f, bore),
+        ((c_r - w_r) - (c_f + w_f), seat, bore),
+        (2.0 * w_r, d_r, bore),
+        (REAR_END_LENGTH_M, d_r - REAR_END_STEP_M, bore),
+    ]
+    return steps, seat
+
+
+#: Where a segment's error points in a description file.
+SEGMENT_TABLE = "(in [spindle.shaft.segment])"
+
+#: How far a seat's step may differ from its bearing's bore [m] (1 um).
+SEAT_TOLERANCE_M = 1e-6
+
+
+def _own_steps(
+    segments: list[Any], seats: list[tuple[str, float, float, float]], core: tuple[float, float]
+) -> tuple[list[tuple[float, float, float]], float]:
+    """The user's shaft segments (length, outer, inner diameter [m] from the
+    nose) as steps, checked: they reach past the rear pair, each pair's
+    seat (its two rows, centre +- one width) lies on steps of its bore; the
+    motor seat is the largest step under the core."""
+    ends = [0.0]
+    for length, _, _ in segments:
+        ends.append(ends[-1] + length)
+    name, c_r, w_r, _ = seats[-1]
+    if ends[-1] < c_r + w_r - SEAT_TOLERANCE_M:
+        raise _fail(
+            "length_mm", segments[-1][0] * 1e3,
+            f"the shaft's segments end {ends[-1] * 1e3:g} mm from the nose, before the "
+            f"{name} pair's seat does ({(c_r + w_r) * 1e3:g} mm) {SEGMENT_TABLE}",
+        )  # fmt: skip
+    for name, c, w, bore in seats:
+        for i, (_, outer, _) in enumerate(segments):
+            overlap = min(ends[i + 1], c + w) - max(ends[i], c - w)
+            if overlap > SEAT_TOLERANCE_M and abs(outer - bore) > SEAT_TOLERANCE_M:
+                raise _fail(
+                    "outer_diameter_mm", outer * 1e3,
+                    f"shaft segment {i + 1} carries the {name} pair (bore {bore * 1e3:g} mm) "
+                    f"between {(c - w) * 1e3:g} and {(c + w) * 1e3:g} mm from the nose: a "
+                    f"bearing seat must have the bearing's bore {SEGMENT_TABLE}",
+                )  # fmt: skip
+    under = [seg[1] for i, seg in enumerate(segments)
+             if min(ends[i + 1], core[1]) - max(ends[i], core[0]) > SEAT_TOLERANCE_M]  # fmt: skip
+    return [tuple(seg) for seg in segments], max(under)
