@@ -327,9 +327,9 @@ def _no_extra_heat(cfg: dict[str, Any]) -> None:
     """A spindle with an extra heat at its front set (a calibrated
     member's unknown heat source) has no description: refused by name, so
     that a file never drops it silently."""
-    for k in EXTRA_HEAT_KEYS:
+    for k in EXTRA_HEAT_KEYS[:3]:  # the heat and the law's coefficients
         v = float(cfg.get(k) or 0.0)
-        if v != 0.0 and k != "unknown_heat_reference_rpm":
+        if v != 0.0:
             raise ConfigError(
                 f"invalid {k} = {v:g}: a spindle with an extra heat at its front bearing set "
                 "(an unknown heat source) has no description file or parts; describe the "

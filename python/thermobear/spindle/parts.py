@@ -81,8 +81,6 @@ class Shaft:
             raise val.fail("segments", segs, "a sequence of thermobear.spindle.ShaftSegment")
         out = []
         for i, seg in enumerate(segs):
-            if isinstance(seg, dict):
-                seg = ShaftSegment(**seg)
             if not isinstance(seg, ShaftSegment):
                 raise val.fail(f"segments[{i}]", seg, "a thermobear.spindle.ShaftSegment")
             out.append(seg)
